@@ -1,0 +1,47 @@
+"""Entry point of the `ros2` command: dispatch `ros2 VERB ...` to a verb module.
+
+Each verb lives in `ros2_cleanroom.verbs.<verb>` and provides
+`main(argv: list[str]) -> int`; it is imported only when used so that
+`ros2 run` does not pay for importing the launch system.
+"""
+from __future__ import annotations
+
+import importlib
+import sys
+
+VERBS = {
+    'launch': 'Run a launch file',
+    'node': 'Various node related sub-commands',
+    'param': 'Various param related sub-commands',
+    'run': 'Run a package specific executable',
+    'topic': 'Various topic related sub-commands',
+}
+
+
+def usage() -> str:
+    lines = ['usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...', '',
+             'ros2 is an extensible command-line tool for ROS 2.', '',
+             'Commands:']
+    lines += ['  %-9s %s' % (name, text) for name, text in sorted(VERBS.items())]
+    lines += ['', '  Call `ros2 <command> -h` for more detailed usage.']
+    return '\n'.join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    if not argv or argv[0] in ('-h', '--help'):
+        print(usage())
+        return 0
+    verb, rest = argv[0], argv[1:]
+    if verb not in VERBS:
+        print(usage().splitlines()[0], file=sys.stderr)
+        print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
+              "invalid choice: '%s' (choose from %s)"
+              % (verb, ', '.join("'%s'" % v for v in sorted(VERBS))), file=sys.stderr)
+        return 2
+    module = importlib.import_module('ros2_cleanroom.verbs.' + verb)
+    return module.main(rest)
+
+
+if __name__ == '__main__':
+    sys.exit(main())
