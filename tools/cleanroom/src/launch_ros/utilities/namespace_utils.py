@@ -1,0 +1,53 @@
+"""ROS namespace arithmetic shared by Node, PushRosNamespace and LifecycleNode.
+
+Kept free of launch imports: the rules are pure string functions and are
+tested on their own.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+
+def is_namespace_absolute(namespace: str) -> bool:
+    """A namespace starting with '/' ignores every pushed namespace."""
+    return namespace.startswith('/')
+
+
+def is_root_namespace(namespace: str) -> bool:
+    return namespace == '/'
+
+
+def make_namespace_absolute(namespace: str) -> str:
+    """Give a relative namespace a leading '/' (ROS resolves them from the root)."""
+    if is_namespace_absolute(namespace):
+        return namespace
+    return '/' + namespace
+
+
+def prefix_namespace(base_ns: Optional[str], namespace: Optional[str]) -> Optional[str]:
+    """Compose a pushed namespace with a node's (or another push's) namespace.
+
+    An absolute `namespace` replaces the base, a relative one is appended to
+    it, and a missing one leaves the base as it was.  Empty strings count as
+    missing, the way `Node(namespace='')` means "no namespace".
+    """
+    if not namespace:
+        return base_ns or None
+    if is_namespace_absolute(namespace) or not base_ns:
+        return namespace
+    return base_ns.rstrip('/') + '/' + namespace
+
+
+def full_node_namespace(pushed: Optional[str], namespace: Optional[str]) -> Optional[str]:
+    """The absolute namespace a node ends up in, or None if it has none at all."""
+    composed = prefix_namespace(pushed, namespace)
+    if composed is None:
+        return None
+    return make_namespace_absolute(composed)
+
+
+def fully_qualified_name(namespace: Optional[str], name: str) -> str:
+    """'/ns/name' as ROS prints it ('/name' in the root namespace)."""
+    if not namespace or is_root_namespace(namespace):
+        return '/' + name
+    return namespace.rstrip('/') + '/' + name

@@ -1,0 +1,77 @@
+"""Parameter typing: YAML 1.1 for substitution text, Python types kept (goldens 02, 07, 13, 28)."""
+from typing import List
+
+import pytest
+from launch_ros.utilities.parameter_values import (
+    coerce_text,
+    coerce_value,
+    flatten_parameters,
+    format_parameter_argument,
+    plain_python_value,
+    yaml_typed,
+)
+
+
+@pytest.mark.parametrize('text, expected', [
+    ('007', 7), ('042', 34), ('true', True), ('false', False), ('True', True),
+    ('3', 3), ('2.0', 2.0), ('1.5', 1.5), ('my_robot', 'my_robot'), ('yes', True),
+    ('[1, 2, 3]', [1, 2, 3]), ('[1, 2.5]', [1.0, 2.5]), ("['a', 'b']", ['a', 'b']),
+])
+def test_yaml_typed(text, expected):
+    value = yaml_typed(text)
+    assert value == expected
+    assert type(value) is type(expected)
+
+
+@pytest.mark.parametrize('text', ['{a: 1}', '[1, [2]]', '[1, a]', '', 'key: [', '[]'])
+def test_yaml_typed_keeps_text_ros_cannot_store(text):
+    assert yaml_typed(text) == text
+
+
+def test_coerce_text_with_value_type():
+    assert coerce_text('007', str) == '007'
+    assert coerce_text('1', float) == 1.0 and isinstance(coerce_text('1', float), float)
+    assert coerce_text('2.5', float) == 2.5
+    assert coerce_text('true', bool) is True
+    assert coerce_text('[1, 2]', List[float]) == [1.0, 2.0]
+    assert coerce_text('5', int) == 5
+
+
+def test_coerce_text_rejects_wrong_type():
+    with pytest.raises(TypeError, match=r"value='2.5' is not an instance of <class 'int'>"):
+        coerce_text('2.5', int)
+    with pytest.raises(TypeError, match='is not an instance of'):
+        coerce_text('abc', float)
+
+
+def test_coerce_value_golden_28_text():
+    with pytest.raises(TypeError) as info:
+        coerce_value('0.5', float)
+    assert str(info.value) == "value='0.5' is not an instance of <class 'float'>"
+
+
+def test_coerce_value_accepts_int_for_float_but_not_bool_for_int():
+    assert coerce_value(3, float) == 3.0 and isinstance(coerce_value(3, float), float)
+    with pytest.raises(TypeError):
+        coerce_value(True, int)
+    assert coerce_value([1, 2], List[int]) == [1, 2]
+    with pytest.raises(TypeError):
+        coerce_value(['a'], List[int])
+
+
+def test_plain_python_value_keeps_types():
+    assert plain_python_value('yes') == 'yes'
+    assert plain_python_value(('a', 'b')) == ['a', 'b']
+    with pytest.raises(TypeError):
+        plain_python_value(object())
+
+
+def test_flatten_parameters_dotted_names():
+    nested = {'limits': {'linear': 0.5, 'angular': {'max': 1.0}}, 'rate': 3}
+    assert flatten_parameters(nested) == {
+        'limits.linear': 0.5, 'limits.angular.max': 1.0, 'rate': 3}
+
+
+def test_format_parameter_argument_uses_python_rendering():
+    assert format_parameter_argument('use_sim_time', True) == 'use_sim_time:=True'
+    assert format_parameter_argument('level', 3) == 'level:=3'
