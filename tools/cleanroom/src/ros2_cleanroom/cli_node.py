@@ -1,0 +1,142 @@
+"""The short-lived rclpy node every introspection verb works through.
+
+There is no daemon in the clean room, so each `ros2 node|topic|param` command
+joins the ROS graph itself, waits for discovery to settle and then answers.
+Its node is hidden (its name starts with `_`) so that it never shows up in the
+listings it prints.
+"""
+from __future__ import annotations
+
+import contextlib
+import os
+import time
+from collections.abc import Callable, Iterator
+from typing import Any
+
+import rclpy
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+
+#: Discovery is never trusted before this long (seconds): a graph that looks
+#: stable right after joining is usually just empty.
+MIN_WAIT = 0.6
+#: The graph counts as settled when it has not changed for this long.
+QUIET_TIME = 0.4
+#: Upper bound for waiting on discovery.
+MAX_WAIT = 3.0
+POLL = 0.05
+
+
+@contextlib.contextmanager
+def cli_node(prefix: str = '_ros2cli') -> Iterator[Node]:
+    """Yield a hidden node in a private context, torn down on exit.
+
+    A private context keeps the verb independent of any global rclpy state and
+    makes shutdown deterministic even when the verb is left by an exception
+    or Ctrl-C.
+    """
+    context = Context()
+    rclpy.init(args=[], context=context)
+    node = None
+    try:
+        node = rclpy.create_node(
+            f'{prefix}_{os.getpid()}', context=context,
+            start_parameter_services=False, enable_rosout=False)
+        yield node
+    finally:
+        if node is not None:
+            node.destroy_node()
+        context.try_shutdown()
+
+
+def graph_fingerprint(node: Node) -> tuple:
+    """Everything discovery can still be filling in, as one comparable value."""
+    names = sorted(node.get_node_names_and_namespaces())
+    endpoints = []
+    for name, namespace in names:
+        with contextlib.suppress(Exception):  # the node may vanish meanwhile
+            endpoints.append((
+                name, namespace,
+                sorted(map(_freeze, node.get_publisher_names_and_types_by_node(name, namespace))),
+                sorted(map(_freeze, node.get_subscriber_names_and_types_by_node(name, namespace))),
+                sorted(map(_freeze, node.get_service_names_and_types_by_node(name, namespace))),
+            ))
+    return tuple(names), tuple(endpoints)
+
+
+def _freeze(item: tuple[str, list[str]]) -> tuple[str, tuple[str, ...]]:
+    return item[0], tuple(item[1])
+
+
+def wait_for_graph(node: Node, until: Callable[[], bool] | None = None,
+                   min_wait: float = MIN_WAIT, quiet: float = QUIET_TIME,
+                   max_wait: float = MAX_WAIT) -> None:
+    """Poll the graph until it stops changing, instead of a fixed long sleep.
+
+    Returns once at least `min_wait` has passed, `until()` (if given) holds and
+    the graph has been unchanged for `quiet` seconds; or after `max_wait`.
+    """
+    start = time.monotonic()
+    last = None
+    last_change = start
+    while True:
+        now = time.monotonic()
+        current = graph_fingerprint(node)
+        if current != last:
+            last, last_change = current, now
+        settled = now - start >= min_wait and now - last_change >= quiet
+        if settled and (until is None or until()):
+            return
+        if now - start >= max_wait:
+            return
+        time.sleep(POLL)
+
+
+def full_name(name: str, namespace: str) -> str:
+    """`/ns` + `name` -> `/ns/name` (the root namespace gives `/name`)."""
+    return namespace.rstrip('/') + '/' + name
+
+
+def split_full_name(full: str) -> tuple[str, str]:
+    """`/ns/name` -> (`name`, `/ns`); a name without a slash is in `/`."""
+    full = full if full.startswith('/') else '/' + full
+    namespace, _, name = full.rpartition('/')
+    return name, namespace or '/'
+
+
+def is_hidden(name: str) -> bool:
+    """ROS hides any node, topic or service with a name token starting with `_`."""
+    return any(token.startswith('_') for token in name.split('/') if token)
+
+
+def node_names(node: Node, include_hidden: bool = False) -> list[str]:
+    """Full names of the nodes in the graph, sorted, hidden ones left out by default."""
+    names = {full_name(n, ns) for n, ns in node.get_node_names_and_namespaces()}
+    return sorted(n for n in names if include_hidden or not is_hidden(n))
+
+
+def wait_for_node(node: Node, target: str, include_hidden: bool = False) -> bool:
+    """Settle discovery, giving the named node the whole time budget to appear."""
+    wait_for_graph(node, until=lambda: target in node_names(node, include_hidden=True))
+    return target in node_names(node, include_hidden=include_hidden)
+
+
+def call_service(node: Node, srv_type: Any, name: str, request: Any,
+                 timeout: float = 5.0) -> Any | None:
+    """Call a service once and return its response, or None if nobody answered."""
+    client = node.create_client(srv_type, name)
+    try:
+        if not client.wait_for_service(timeout_sec=timeout):
+            return None
+        future = client.call_async(request)
+        executor = SingleThreadedExecutor(context=node.context)
+        executor.add_node(node)
+        try:
+            executor.spin_until_future_complete(future, timeout_sec=timeout)
+        finally:
+            executor.remove_node(node)
+            executor.shutdown()
+        return future.result() if future.done() else None
+    finally:
+        node.destroy_client(client)
