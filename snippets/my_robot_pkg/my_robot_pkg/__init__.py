@@ -1,0 +1,1 @@
+"""Nodes of the example robot used throughout the textbook."""
