@@ -59,7 +59,7 @@ def _type_error(value: Any, value_type: Any) -> TypeError:
     return TypeError(f'value={value!r} is not an instance of {value_type}')
 
 
-def _list_item_type(value_type: Any) -> Any | None:
+def list_item_type(value_type: Any) -> Any | None:
     """`List[int]` / `list[int]` -> int; `list` -> None (any item type)."""
     origin = typing.get_origin(value_type)
     if origin in (list, tuple, Sequence, typing.List):
@@ -68,7 +68,7 @@ def _list_item_type(value_type: Any) -> Any | None:
     return None
 
 
-def _is_list_type(value_type: Any) -> bool:
+def is_list_type(value_type: Any) -> bool:
     return value_type in (list, tuple) or typing.get_origin(value_type) in (
         list, tuple, Sequence, typing.List)
 
@@ -82,10 +82,10 @@ def coerce_value(value: Any, value_type: Any) -> Any:
     """
     if value_type is None:
         return value
-    if _is_list_type(value_type):
+    if is_list_type(value_type):
         if not isinstance(value, (list, tuple)):
             raise _type_error(value, value_type)
-        item_type = _list_item_type(value_type)
+        item_type = list_item_type(value_type)
         try:
             return [coerce_value(item, item_type) for item in value]
         except TypeError:

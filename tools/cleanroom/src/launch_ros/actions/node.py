@@ -1,0 +1,171 @@
+"""The Node action: an ExecuteProcess whose command line carries ROS arguments.
+
+Everything ROS-specific (name, namespace, parameters, remappings, plus the
+global parameters and remappings set by SetParameter / SetRemap in scope)
+is substituted when the action executes and appended to `self.cmd` before
+`ExecuteProcess.execute` expands and starts it (ARCHITECTURE.md contract).
+"""
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from typing import Any, Optional
+
+from launch import LaunchContext
+from launch.actions import ExecuteProcess
+from launch.logging import get_logger
+from launch.utilities import normalize_to_list_of_substitutions
+
+from ..substitutions import ExecutableInPackage
+from ..utilities.command_line import (
+    ParamArg,
+    ParameterArgument,
+    ParamFileArg,
+    global_parameter_entries,
+    ros_specific_arguments,
+)
+from ..utilities.evaluate_parameters import evaluate_parameters
+from ..utilities.launch_cleanup import ensure_cleanup_registered, owner_key
+from ..utilities.namespace_utils import full_node_namespace, fully_qualified_name
+from ..utilities.normalize_parameters import normalize_parameters
+from ..utilities.normalize_remap_rule import evaluate_remap_rules, normalize_remap_rules
+from ..utilities.param_files import write_parameters_file
+from ..utilities.ros_state import global_params, global_remaps, pushed_namespace
+from ..utilities.substitution_values import perform_text
+from ..utilities.track_node_names import add_node_name
+
+_logger_name = 'launch_ros.actions.node'
+
+
+class Node(ExecuteProcess):
+    """Start a ROS node from a package's libexec directory (or an executable on PATH)."""
+
+    UNSPECIFIED_NODE_NAME = '<node_name_unspecified>'
+    UNSPECIFIED_NODE_NAMESPACE = '<node_namespace_unspecified>'
+
+    def __init__(self, *, executable: Any, package: Any = None, name: Any = None,
+                 namespace: Any = None, exec_name: Any = None,
+                 parameters: Optional[Sequence[Any]] = None,
+                 remappings: Optional[Iterable[Any]] = None,
+                 ros_arguments: Optional[Iterable[Any]] = None,
+                 arguments: Optional[Iterable[Any]] = None, **kwargs: Any) -> None:
+        if package is not None:
+            cmd: list[Any] = [ExecutableInPackage(executable=executable, package=package)]
+        else:
+            cmd = [executable]
+        cmd += list(arguments or [])
+        ros_arguments = list(ros_arguments or [])
+        if ros_arguments:
+            cmd += ['--ros-args', *ros_arguments]
+        super().__init__(cmd=cmd, name=exec_name, **kwargs)
+        self.__base_cmd = list(self.cmd)
+        self.__package = package
+        self.__executable = executable
+        self.__node_name = None if name is None else normalize_to_list_of_substitutions(name)
+        self.__node_namespace = (None if namespace is None
+                                 else normalize_to_list_of_substitutions(namespace))
+        self.__parameters = [] if parameters is None else normalize_parameters(parameters)
+        self.__remappings = [] if remappings is None else normalize_remap_rules(remappings)
+        self.__arguments = arguments
+        self.__ros_arguments = ros_arguments
+        self.__expanded_node_name = self.UNSPECIFIED_NODE_NAME
+        self.__expanded_node_namespace = self.UNSPECIFIED_NODE_NAMESPACE
+        self.__final_node_name: Optional[str] = None
+        self.__expanded_remappings: Optional[list[tuple[str, str]]] = None
+        self.__logger = get_logger(_logger_name)
+
+    # -- Jazzy's read-only properties -------------------------------------------------
+    @property
+    def node_package(self) -> Any:
+        return self.__package
+
+    @property
+    def node_executable(self) -> Any:
+        return self.__executable
+
+    @property
+    def node_name(self) -> str:
+        """Fully qualified name once executed ('/ns/name'), else UNSPECIFIED_NODE_NAME."""
+        return self.__final_node_name or self.UNSPECIFIED_NODE_NAME
+
+    @property
+    def expanded_node_namespace(self) -> str:
+        return self.__expanded_node_namespace
+
+    @property
+    def expanded_remapping_rules(self) -> Optional[list[tuple[str, str]]]:
+        return self.__expanded_remappings
+
+    @property
+    def ros_arguments(self) -> list[Any]:
+        return list(self.__ros_arguments)
+
+    def is_node_name_fully_specified(self) -> bool:
+        return (self.__expanded_node_name != self.UNSPECIFIED_NODE_NAME
+                and self.__expanded_node_namespace != self.UNSPECIFIED_NODE_NAMESPACE)
+
+    # -- execution --------------------------------------------------------------------
+    def _expand_name_and_namespace(self, context: LaunchContext) -> tuple[Optional[str],
+                                                                        Optional[str]]:
+        name = None if self.__node_name is None else perform_text(context, self.__node_name)
+        own_ns = (None if self.__node_namespace is None
+                  else perform_text(context, self.__node_namespace))
+        namespace = full_node_namespace(pushed_namespace(context), own_ns)
+        if name:
+            self.__expanded_node_name = name
+            self.__final_node_name = fully_qualified_name(namespace, name)
+        if namespace:
+            self.__expanded_node_namespace = namespace
+        return name or None, namespace
+
+    def _parameter_file_key(self, name: Optional[str], namespace: Optional[str]) -> str:
+        """Jazzy keys a parameter dict by '/ns/name' only when both are known (goldens 02, 17)."""
+        if name and namespace:
+            return fully_qualified_name(namespace, name)
+        return '/**'
+
+    def _parameter_arguments(self, context: LaunchContext, name: Optional[str],
+                             namespace: Optional[str]) -> list[ParameterArgument]:
+        entries: list[ParameterArgument] = []
+        global_entries = global_parameter_entries(global_params(context))
+        evaluated = evaluate_parameters(context, self.__parameters)
+        for entry in global_entries:
+            if isinstance(entry, ParamFileArg):
+                entry = self._checked_file(entry.path)
+            if entry is not None:
+                entries.append(entry)
+        for item in evaluated:
+            if isinstance(item, dict):
+                path = write_parameters_file(self._parameter_file_key(name, namespace), item,
+                                             owner=owner_key(context))
+                entries.append(ParamFileArg(path))
+            elif isinstance(item, tuple):
+                entries.append(ParamArg(*item))
+            else:
+                checked = self._checked_file(str(item))
+                if checked is not None:
+                    entries.append(checked)
+        return entries
+
+    def _checked_file(self, path: str) -> Optional[ParamFileArg]:
+        """A missing parameter file only earns a warning in Jazzy (golden 25)."""
+        if os.path.isfile(path):
+            return ParamFileArg(path)
+        self.__logger.warning(f'Parameter file path is not a file: {path}')
+        return None
+
+    def _ros_command_tail(self, context: LaunchContext) -> list[str]:
+        name, namespace = self._expand_name_and_namespace(context)
+        parameters = self._parameter_arguments(context, name, namespace)
+        own_remaps = evaluate_remap_rules(context, self.__remappings)
+        self.__expanded_remappings = global_remaps(context) + own_remaps
+        if self.__final_node_name:
+            add_node_name(context, self.__final_node_name)
+        return ros_specific_arguments(name=name, namespace=namespace, parameters=parameters,
+                                      remappings=self.__expanded_remappings)
+
+    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+        ensure_cleanup_registered(context)
+        tail = self._ros_command_tail(context)
+        self.cmd[:] = self.__base_cmd + [normalize_to_list_of_substitutions(arg) for arg in tail]
+        return super().execute(context)

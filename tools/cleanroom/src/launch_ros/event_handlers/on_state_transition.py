@@ -1,0 +1,44 @@
+"""OnStateTransition: run entities when a lifecycle node reaches a state."""
+from __future__ import annotations
+
+from typing import Any, Callable, Optional
+
+from launch import EventHandler
+
+from ..events.lifecycle import StateTransition
+
+
+class OnStateTransition(EventHandler):
+    """Handle StateTransition events, optionally filtered by node and labels.
+
+    `target_lifecycle_node` is the LifecycleNode action; `transition`,
+    `start_state` and `goal_state` are labels such as 'activate', 'inactive'.
+    A custom `matcher` replaces all of those filters.
+    """
+
+    def __init__(self, *, entities: Any, target_lifecycle_node: Any = None,
+                 transition: Optional[str] = None, start_state: Optional[str] = None,
+                 goal_state: Optional[str] = None,
+                 matcher: Optional[Callable[[Any], bool]] = None, **kwargs: Any) -> None:
+        self.__target = target_lifecycle_node
+        self.__filters = {'transition': transition, 'start_state': start_state,
+                          'goal_state': goal_state}
+        super().__init__(matcher=matcher or self._matches, entities=entities, **kwargs)
+
+    def _matches(self, event: Any) -> bool:
+        if not isinstance(event, StateTransition):
+            return False
+        if self.__target is not None and event.action is not self.__target:
+            return False
+        return all(expected is None or getattr(event, attr) == expected
+                   for attr, expected in self.__filters.items())
+
+    @property
+    def handler_description(self) -> str:
+        return '<actions>'
+
+    @property
+    def matcher_description(self) -> str:
+        wanted = ', '.join(f'{k}={v!r}' for k, v in self.__filters.items() if v is not None)
+        node = getattr(self.__target, 'node_name', None)
+        return f'event == StateTransition and node == {node!r} and ({wanted or "any"})'

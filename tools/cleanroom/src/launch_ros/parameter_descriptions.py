@@ -1,0 +1,159 @@
+"""Descriptions of ROS parameters: Parameter, ParameterValue, ParameterFile.
+
+Descriptions are made when the launch file is loaded and evaluated when the
+node that uses them is executed, so launch arguments given later (or by an
+include) are seen.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any, Optional, Union
+
+from launch import LaunchContext, Substitution
+from launch.utilities import normalize_to_list_of_substitutions
+
+from .utilities.param_files import write_temporary_file
+from .utilities.parameter_values import coerce_value, plain_python_value
+from .utilities.substitution_values import evaluate_value, is_substitution_text, perform_text
+
+
+class ParameterValue:
+    """A parameter value with an optional `value_type` (str, int, float, bool, List[...]).
+
+    Python values are checked against `value_type` right away, as Jazzy does
+    (golden 28: `ParameterValue('0.5', value_type=float)` is an error);
+    substitutions are typed when evaluated.
+    """
+
+    def __init__(self, value: Any, *, value_type: Any = None) -> None:
+        if value_type is not None and not _contains_substitution(value):
+            coerce_value(plain_python_value(value), value_type)
+        self.__value = value
+        self.__value_type = value_type
+        self.__evaluated: Any = None
+
+    @property
+    def value(self) -> Any:
+        return self.__value
+
+    @property
+    def value_type(self) -> Any:
+        return self.__value_type
+
+    @property
+    def evaluated_value(self) -> Any:
+        """The value of the last `evaluate()` (None before)."""
+        return self.__evaluated
+
+    def evaluate(self, context: LaunchContext) -> Any:
+        self.__evaluated = evaluate_value(context, self.__value, self.__value_type)
+        return self.__evaluated
+
+    def __repr__(self) -> str:
+        return f'ParameterValue({self.__value!r}, value_type={self.__value_type!r})'
+
+
+class Parameter:
+    """One named parameter; given to a node it becomes `-p name:=value`."""
+
+    def __init__(self, name: Any, value: Any, *, value_type: Any = None) -> None:
+        self.__name = name
+        self.__value = value if isinstance(value, ParameterValue) else ParameterValue(
+            value, value_type=value_type)
+
+    @property
+    def name(self) -> Any:
+        return self.__name
+
+    @property
+    def value(self) -> Any:
+        return self.__value.value
+
+    @property
+    def value_type(self) -> Any:
+        return self.__value.value_type
+
+    def evaluate(self, context: LaunchContext) -> tuple[str, Any]:
+        name = self.__name if isinstance(self.__name, str) else perform_text(context, self.__name)
+        return name, self.__value.evaluate(context)
+
+    def __repr__(self) -> str:
+        return f'Parameter({self.__name!r}, {self.__value!r})'
+
+
+class ParameterFile:
+    """A parameter file, optionally with `$(var ...)`-style substitutions inside.
+
+    With `allow_substs` the file is read, its substitutions expanded and the
+    result written to a temporary `launch_params_*` file (golden 13); the
+    temporary file goes away with `cleanup()` or when the launch ends.
+    """
+
+    def __init__(self, param_file: Union[str, Path, Any], *,
+                 allow_substs: Union[bool, Any] = False) -> None:
+        self.__param_file = (param_file if isinstance(param_file, Path)
+                             else normalize_to_list_of_substitutions(param_file))
+        self.__allow_substs = (allow_substs if isinstance(allow_substs, bool)
+                               else normalize_to_list_of_substitutions(allow_substs))
+        self.__evaluated: Optional[Path] = None
+        self.__created: Optional[str] = None
+
+    @property
+    def param_file(self) -> Any:
+        return self.__param_file
+
+    @property
+    def allow_substs(self) -> Any:
+        return self.__allow_substs
+
+    def _source_path(self, context: LaunchContext) -> str:
+        if isinstance(self.__param_file, Path):
+            return str(self.__param_file)
+        return perform_text(context, self.__param_file)
+
+    def _substitutions_allowed(self, context: LaunchContext) -> bool:
+        if isinstance(self.__allow_substs, bool):
+            return self.__allow_substs
+        text = perform_text(context, self.__allow_substs).strip().lower()
+        if text in ('true', '1'):
+            return True
+        if text in ('false', '0'):
+            return False
+        raise ValueError(f"allow_substs must be 'true' or 'false', got '{text}'")
+
+    def evaluate(self, context: LaunchContext) -> Path:
+        """Return the file the node should read (a temporary one if substituted)."""
+        source = self._source_path(context)
+        if not self._substitutions_allowed(context) or not os.path.isfile(source):
+            self.__evaluated = Path(source)
+            return self.__evaluated
+        from .utilities.file_substitutions import expand_file_substitutions
+        with open(source) as handle:
+            text = expand_file_substitutions(context, handle.read(), source)
+        self.__created = write_temporary_file(text, owner=id(context))
+        self.__evaluated = Path(self.__created)
+        return self.__evaluated
+
+    def cleanup(self) -> None:
+        """Delete the temporary file made by `evaluate()`, if any."""
+        if self.__created is not None:
+            try:
+                os.unlink(self.__created)
+            except FileNotFoundError:
+                pass
+            self.__created = None
+
+    def __repr__(self) -> str:
+        return f'ParameterFile({self.__param_file!r}, allow_substs={self.__allow_substs!r})'
+
+
+def _contains_substitution(value: Any) -> bool:
+    if isinstance(value, Substitution) or is_substitution_text(value):
+        return True
+    if isinstance(value, (list, tuple)):
+        return any(_contains_substitution(item) for item in value)
+    return False
+
+
+__all__ = ['Parameter', 'ParameterFile', 'ParameterValue']

@@ -1,0 +1,115 @@
+"""An rclpy node inside the launch process, spun on a background thread.
+
+Only lifecycle support needs it (service clients and the transition_event
+subscription), so it is created on first use and shut down with the launch.
+It has its own rclpy Context and installs no signal handlers: SIGINT
+belongs to the LaunchService.
+"""
+from __future__ import annotations
+
+import atexit
+import os
+import threading
+import weakref
+from typing import Any, Optional
+
+from launch import LaunchContext
+
+from .utilities.launch_cleanup import add_shutdown_callback
+
+
+class ROSAdapter:
+    """Own one rclpy context, node and executor thread."""
+
+    def __init__(self, *, argv: Optional[list[str]] = None, autostart: bool = True) -> None:
+        self.__argv = argv
+        self.__ros_context: Any = None
+        self.__ros_node: Any = None
+        self.__executor: Any = None
+        self.__thread: Optional[threading.Thread] = None
+        self.__stop = threading.Event()
+        if autostart:
+            self.start()
+
+    def start(self) -> None:
+        import rclpy
+        from rclpy.executors import SingleThreadedExecutor
+        from rclpy.signals import SignalHandlerOptions
+
+        if self.__thread is not None:
+            raise RuntimeError('ROSAdapter already started')
+        self.__ros_context = rclpy.Context()
+        rclpy.init(args=self.__argv, context=self.__ros_context,
+                   signal_handler_options=SignalHandlerOptions.NO)
+        self.__ros_node = rclpy.create_node(f'launch_ros_{os.getpid()}',
+                                            context=self.__ros_context)
+        self.__executor = SingleThreadedExecutor(context=self.__ros_context)
+        self.__executor.add_node(self.__ros_node)
+        self.__thread = threading.Thread(target=self._spin, name='launch_ros_adapter',
+                                         daemon=True)
+        self.__thread.start()
+
+    def _spin(self) -> None:
+        while not self.__stop.is_set() and self.__ros_context.ok():
+            try:
+                self.__executor.spin_once(timeout_sec=0.1)
+            except Exception:  # noqa: BLE001 - executor errors must not kill the launch
+                if self.__stop.is_set() or not self.__ros_context.ok():
+                    break
+                raise
+
+    @property
+    def ros_context(self) -> Any:
+        return self.__ros_context
+
+    @property
+    def ros_node(self) -> Any:
+        return self.__ros_node
+
+    @property
+    def ros_executor(self) -> Any:
+        return self.__executor
+
+    @property
+    def stopped(self) -> threading.Event:
+        """Set once shutdown began; worker threads waiting on ROS should give up."""
+        return self.__stop
+
+    def shutdown(self) -> None:
+        """Stop the spin thread, destroy the node and shut the rclpy context down."""
+        if self.__thread is None or self.__stop.is_set():
+            self.__stop.set()
+            return
+        self.__stop.set()
+        self.__thread.join(timeout=5.0)
+        self.__executor.shutdown(timeout_sec=1.0)
+        self.__ros_node.destroy_node()
+        self.__ros_context.try_shutdown()
+
+
+_adapters: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_lock = threading.Lock()
+
+
+def get_ros_adapter(context: LaunchContext) -> ROSAdapter:
+    """The adapter of this launch, started on first use and stopped at its shutdown."""
+    with _lock:
+        adapter = _adapters.get(context)
+        if adapter is None:
+            adapter = ROSAdapter()
+            _adapters[context] = adapter
+            add_shutdown_callback(context, adapter.shutdown)
+    return adapter
+
+
+def get_ros_node(context: LaunchContext) -> Any:
+    return get_ros_adapter(context).ros_node
+
+
+def _shutdown_all() -> None:
+    """Safety net for launches that ended without a Shutdown event."""
+    for adapter in list(_adapters.values()):
+        adapter.shutdown()
+
+
+atexit.register(_shutdown_all)

@@ -1,0 +1,46 @@
+"""Evaluate normalized parameters against a launch context.
+
+The result is a list of `pathlib.Path` (parameter files), `(name, value)`
+tuples (single `Parameter`s) and flat `{name: value}` dicts, in the order
+the launch file gave them.
+"""
+from __future__ import annotations
+
+from collections.abc import Sequence
+from pathlib import Path
+from typing import Any, Union
+
+from launch import LaunchContext
+
+from ..parameter_descriptions import Parameter, ParameterFile
+from .normalize_parameters import NormalizedParameter, NormalizedParameterDict
+from .substitution_values import perform_text
+
+EvaluatedParameter = Union[Path, tuple[str, Any], dict[str, Any]]
+
+
+def _key_part(context: LaunchContext, part: Any) -> str:
+    return part if isinstance(part, str) else perform_text(context, part)
+
+
+def evaluate_parameter_dict(context: LaunchContext,
+                            parameters: NormalizedParameterDict) -> dict[str, Any]:
+    """Substitute names and values; nested names are joined with '.'."""
+    evaluated: dict[str, Any] = {}
+    for name_parts, value in parameters.items():
+        name = '.'.join(_key_part(context, part) for part in name_parts)
+        evaluated[name] = value.evaluate(context)
+    return evaluated
+
+
+def evaluate_parameters(context: LaunchContext,
+                        parameters: Sequence[NormalizedParameter]) -> list[EvaluatedParameter]:
+    evaluated: list[EvaluatedParameter] = []
+    for entry in parameters:
+        if isinstance(entry, ParameterFile):
+            evaluated.append(entry.evaluate(context))
+        elif isinstance(entry, Parameter):
+            evaluated.append(entry.evaluate(context))
+        else:
+            evaluated.append(evaluate_parameter_dict(context, entry))
+    return evaluated
