@@ -29,6 +29,7 @@ class _CallbackHandler(EventHandler):
         self.__callback = callback
 
     def handle(self, event: Any, context: LaunchContext) -> None:
+        super().handle(event, context)
         self.__callback(event, context)
         return None
 

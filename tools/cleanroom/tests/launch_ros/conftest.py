@@ -1,0 +1,186 @@
+"""Fixtures of the launch_ros tests: a private ROS domain, a colcon-built
+package, a way to run a launch in-process and record what it started, and
+a session-end check that no process started by the tests survived.
+"""
+from __future__ import annotations
+
+import fcntl
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+import uuid
+from collections.abc import Iterator
+from pathlib import Path
+
+import psutil
+import pytest
+
+HERE = Path(__file__).parent
+TOKEN_VAR = 'LAUNCH_ROS_TEST_TOKEN'
+DOMAIN_IDS = range(1, 90)
+
+
+def _lock_dir() -> Path:
+    path = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def _lease_domain() -> tuple[int, int]:
+    """Lock one free ROS domain ID (CONTRIBUTING.md allocator); returns (id, fd)."""
+    for domain_id in DOMAIN_IDS:
+        fd = os.open(_lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        os.ftruncate(fd, 0)
+        os.write(fd, f'{os.getpid()}\n'.encode())
+        return domain_id, fd
+    raise RuntimeError('no free ROS domain ID in 1-89')
+
+
+def _processes_with_token(token: str) -> list[psutil.Process]:
+    found = []
+    for proc in psutil.process_iter():
+        if proc.pid == os.getpid():
+            continue
+        try:
+            if proc.environ().get(TOKEN_VAR) == token:
+                found.append(proc)
+        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
+            continue
+    return found
+
+
+@pytest.fixture(scope='session', autouse=True)
+def ros_isolation() -> Iterator[int]:
+    """Put this session (and every process it starts) in a private ROS domain.
+
+    A token in the environment marks the processes we start, so the end of
+    the session can check that none of them is still alive.
+    """
+    domain_id, fd = _lease_domain()
+    saved = {k: os.environ.get(k) for k in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE',
+                                           'ROS_LOCALHOST_ONLY', TOKEN_VAR)}
+    token = uuid.uuid4().hex
+    os.environ.update({'ROS_DOMAIN_ID': str(domain_id),
+                       'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST', TOKEN_VAR: token})
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
+    try:
+        yield domain_id
+    finally:
+        leftovers = _processes_with_token(token)
+        for proc in leftovers:
+            proc.kill()
+        for key, value in saved.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
+        os.close(fd)
+        assert not leftovers, f'processes left behind by the tests: {leftovers}'
+
+
+@pytest.fixture(scope='session')
+def test_package(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Build fixture_pkg/lr_test_pkg with colcon; return its install prefix.
+
+    The prefix is put on AMENT_PREFIX_PATH (for the ament index) and its
+    site-packages on PYTHONPATH (for the console scripts), as setup.bash would.
+    """
+    ws = tmp_path_factory.mktemp('ws')
+    shutil.copytree(HERE / 'fixture_pkg', ws / 'src')
+    colcon = shutil.which('colcon', path=os.path.dirname(sys.executable)) or 'colcon'
+    subprocess.run([colcon, 'build'], cwd=ws, check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.STDOUT, timeout=120)
+    prefix = ws / 'install' / 'lr_test_pkg'
+    site = next(prefix.glob('lib/python3*/site-packages'))
+    for var, value in (('AMENT_PREFIX_PATH', prefix), ('PYTHONPATH', site)):
+        old = os.environ.get(var)
+        os.environ[var] = str(value) + (os.pathsep + old if old else '')
+    return prefix
+
+
+class LaunchRecord:
+    """What one in-process launch did: its exit code and the processes it started."""
+
+    def __init__(self) -> None:
+        self.returncode: int | None = None
+        self.processes: list[dict] = []
+
+    def by_name(self, prefix: str) -> dict:
+        """The process whose `name-N` starts with `prefix-`."""
+        matches = [p for p in self.processes if p['name'].rsplit('-', 1)[0] == prefix]
+        assert len(matches) == 1, (prefix, [p['name'] for p in self.processes])
+        return matches[0]
+
+    def node_cmd(self, node_name: str) -> list:
+        """The command line of the process started with `-r __node:=node_name`."""
+        matches = [p['cmd'] for p in self.processes if '__node:=' + node_name in p['cmd']]
+        assert len(matches) == 1, (node_name, [p['cmd'] for p in self.processes])
+        return matches[0]
+
+
+def _read_param_files(cmd: list[str]) -> list:
+    """Replace each `--params-file PATH` by {'path': PATH, 'content': parsed YAML}.
+
+    Read while the process starts, since temporary files go away with the launch.
+    """
+    import yaml
+
+    out, i = [], 0
+    while i < len(cmd):
+        if cmd[i] == '--params-file' and i + 1 < len(cmd):
+            path = cmd[i + 1]
+            try:
+                with open(path) as handle:
+                    content = yaml.safe_load(handle)
+            except OSError as exc:
+                content = f'unreadable: {exc.strerror}'
+            out += ['--params-file', {'path': path, 'content': content}]
+            i += 2
+        else:
+            out.append(cmd[i])
+            i += 1
+    return out
+
+
+@pytest.fixture
+def run_launch():
+    """Run entities in a LaunchService in this process; return a LaunchRecord.
+
+    With `shutdown_after=None` the launch ends when idle (every process
+    exited); otherwise a Shutdown is emitted after that many seconds.  The
+    record is checked for processes that outlived the launch.
+    """
+    from launch import LaunchDescription, LaunchService
+    from launch.actions import EmitEvent, RegisterEventHandler, TimerAction
+    from launch.event_handlers import OnProcessStart
+    from launch.events import Shutdown
+
+    def run(entities: list, *, argv: tuple = (), shutdown_after: float | None = None,
+            ) -> LaunchRecord:
+        record = LaunchRecord()
+
+        def on_start(event, context):
+            record.processes.append({
+                'name': event.process_name, 'pid': event.pid,
+                'cmd': _read_param_files([str(t) for t in event.cmd]),
+                'env': dict(event.env or {})})
+
+        extra = [] if shutdown_after is None else [
+            TimerAction(period=shutdown_after, actions=[EmitEvent(event=Shutdown())])]
+        service = LaunchService(argv=list(argv))
+        service.include_launch_description(LaunchDescription(
+            [RegisterEventHandler(OnProcessStart(on_start=on_start)), *entities, *extra]))
+        record.returncode = service.run()
+        alive = [p for p in record.processes if psutil.pid_exists(p['pid'])
+                 and psutil.Process(p['pid']).status() != psutil.STATUS_ZOMBIE]
+        assert not alive, f'processes outlived the launch: {alive}'
+        return record
+
+    return run

@@ -1,0 +1,123 @@
+"""LifecycleNode driven to 'active' by ChangeState / OnStateTransition, checked with get_state."""
+import lifecycle_msgs.msg
+import lifecycle_msgs.srv
+import pytest
+from launch.actions import EmitEvent, OpaqueFunction, RegisterEventHandler, TimerAction
+from launch.events import Shutdown, matches_action
+from launch_ros.actions import LifecycleNode, LifecycleTransition
+from launch_ros.event_handlers import OnStateTransition
+from launch_ros.events.lifecycle import ChangeState, StateTransition, matches_node_name
+
+PKG = 'lr_test_pkg'
+T = lifecycle_msgs.msg.Transition
+
+
+def query_state(service: str) -> str:
+    """Ask get_state from a separate rclpy context, as an outside tool would."""
+    import rclpy
+    from rclpy.signals import SignalHandlerOptions
+
+    context = rclpy.Context()
+    rclpy.init(context=context, signal_handler_options=SignalHandlerOptions.NO)
+    try:
+        node = rclpy.create_node('lr_state_probe', context=context)
+        client = node.create_client(lifecycle_msgs.srv.GetState, service)
+        assert client.wait_for_service(timeout_sec=10.0), service
+        future = client.call_async(lifecycle_msgs.srv.GetState.Request())
+        executor = rclpy.executors.SingleThreadedExecutor(context=context)
+        executor.add_node(node)
+        executor.spin_until_future_complete(future, timeout_sec=10.0)
+        assert future.done(), 'get_state did not answer'
+        return future.result().current_state.label
+    finally:
+        context.try_shutdown()
+
+
+def transitions_recorder(node, seen):
+    def record(context):
+        event = context.locals.event
+        assert isinstance(event, StateTransition) and event.action is node
+        seen.append((event.start_state, event.goal_state))
+
+    return RegisterEventHandler(OnStateTransition(
+        target_lifecycle_node=node, entities=[OpaqueFunction(function=record)]))
+
+
+def probe_then_shutdown(service, states):
+    def probe(context):
+        states.append(query_state(service))
+        return [EmitEvent(event=Shutdown(reason='checked'))]
+
+    return OpaqueFunction(function=probe)
+
+
+def test_change_state_events_drive_node_to_active(test_package, run_launch):
+    node = LifecycleNode(package=PKG, executable='lifecycle_talker', name='lc_talker',
+                         namespace='lr')
+    seen, states = [], []
+    record = run_launch([
+        node,
+        transitions_recorder(node, seen),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=node, goal_state='inactive',
+            entities=[EmitEvent(event=ChangeState(
+                lifecycle_node_matcher=matches_action(node),
+                transition_id=T.TRANSITION_ACTIVATE))])),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=node, start_state='activating', goal_state='active',
+            entities=[probe_then_shutdown('/lr/lc_talker/get_state', states)])),
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                    transition_id=T.TRANSITION_CONFIGURE)),
+        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+    ])
+    assert record.returncode == 0
+    assert states == ['active']
+    assert seen == [('unconfigured', 'configuring'), ('configuring', 'inactive'),
+                    ('inactive', 'activating'), ('activating', 'active')]
+    assert node.node_name == '/lr/lc_talker'
+    assert record.node_cmd('lc_talker')[1:] == [
+        '--ros-args', '-r', '__node:=lc_talker', '-r', '__ns:=/lr']
+
+
+def test_lifecycle_transition_action_walks_the_chain(test_package, run_launch):
+    node = LifecycleNode(package=PKG, executable='lifecycle_talker', name='walker',
+                         namespace='')
+    states = []
+    run_launch([
+        node,
+        LifecycleTransition(lifecycle_node_names=['/walker'],
+                            transition_ids=[T.TRANSITION_CONFIGURE, T.TRANSITION_ACTIVATE]),
+        RegisterEventHandler(OnStateTransition(
+            matcher=lambda e: isinstance(e, StateTransition) and e.goal_state == 'active',
+            entities=[probe_then_shutdown('/walker/get_state', states)])),
+        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+    ])
+    assert states == ['active']
+
+
+def test_refused_transition_is_logged(test_package, run_launch, capfd):
+    node = LifecycleNode(package=PKG, executable='lifecycle_talker', name='refuser',
+                         namespace='lr')
+    states = []
+    run_launch([
+        node,
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_node_name('/lr/refuser'),
+                                    transition_id=T.TRANSITION_ACTIVATE)),
+        TimerAction(period=2.0, actions=[
+            probe_then_shutdown('/lr/refuser/get_state', states)]),
+        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+    ])
+    out = capfd.readouterr()
+    assert states == ['unconfigured']
+    assert ("Failed to make transition 'TRANSITION_ACTIVATE' for LifecycleNode '/lr/refuser'"
+            in out.out + out.err)
+
+
+def test_change_state_rejects_unknown_transition():
+    with pytest.raises(ValueError, match="transition_id of '42'"):
+        ChangeState(lifecycle_node_matcher=lambda action: True, transition_id=42)
+
+
+def test_lifecycle_node_requires_name_and_namespace():
+    with pytest.raises(TypeError):
+        LifecycleNode(package=PKG, executable='lifecycle_talker', name='x')
