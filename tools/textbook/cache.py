@@ -1,0 +1,85 @@
+"""Content-addressed cache of executed lessons.
+
+A lesson is executed again only when something that can change its output
+changed: its text, the snippet packages it includes or runs, or the tools
+that execute it (this package's execution code, labkit, the clean-room
+launch, the pinned packages).
+"""
+from __future__ import annotations
+
+import fcntl
+import os
+import re
+import shutil
+import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
+
+import nbformat
+
+from . import __version__, paths
+from .fingerprint import hash_paths, hash_text
+from .lessons import Lesson
+
+LESSON_CACHE = paths.CACHE / "lessons"
+# The parts of this package whose behaviour shows up in executed output.
+_EXECUTION_MODULES = ["environment.py", "execute.py", "includes.py", "isolation.py",
+                      "lessons.py", "workspace.py"]
+
+
+def tools_fingerprint() -> str:
+    """Changes when the machinery that runs lessons changes."""
+    here = Path(__file__).parent
+    sources = [here / name for name in _EXECUTION_MODULES]
+    sources += [paths.TOOLS / "labkit", paths.TOOLS / "cleanroom" / "src",
+                paths.ROOT / "requirements" / "lock.txt"]
+    ros2 = shutil.which("ros2", path=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
+    return hash_text(__version__, hash_paths(sources, base=paths.ROOT), str(ros2))
+
+
+def snippet_dependencies(lesson: Lesson) -> list[Path]:
+    """Snippet folders/files whose change must re-execute ``lesson``.
+
+    Every package of snippets/ the lesson names (it includes, runs or
+    launches from it), every included file, and all of snippets/ for a
+    lesson that builds the workspace itself.
+    """
+    if re.search(r"\bcolcon\s+build\b", lesson.text):
+        return [paths.SNIPPETS]
+    packages = [p for p in sorted(paths.SNIPPETS.iterdir()) if p.is_dir()
+                and re.search(rf"\b{re.escape(p.name)}\b", lesson.text)]
+    return packages + [s.path for s in lesson.snippets]
+
+
+def lesson_key(lesson: Lesson) -> str:
+    return hash_text(lesson.text, hash_paths(snippet_dependencies(lesson), base=paths.ROOT),
+                     tools_fingerprint())
+
+
+def cached(key: str) -> nbformat.NotebookNode | None:
+    path = LESSON_CACHE / f"{key}.ipynb"
+    return nbformat.read(path, as_version=4) if path.exists() else None
+
+
+def store(key: str, notebook: nbformat.NotebookNode) -> Path:
+    return write_atomic(notebook, LESSON_CACHE / f"{key}.ipynb")
+
+
+@contextmanager
+def exclusive(key: str) -> Iterator[None]:
+    """Only one process executes a given lesson version; others wait, then hit the cache."""
+    LESSON_CACHE.mkdir(parents=True, exist_ok=True)
+    with open(LESSON_CACHE / f"{key}.lock", "w") as handle:
+        fcntl.flock(handle, fcntl.LOCK_EX)
+        yield
+
+
+def write_atomic(notebook: nbformat.NotebookNode, target: Path) -> Path:
+    """Write so that a reader never sees half a notebook (serve and tests run at once)."""
+    target.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
+    with os.fdopen(fd, "w") as handle:
+        nbformat.write(notebook, handle)
+    os.replace(tmp, target)
+    return target

@@ -1,0 +1,179 @@
+"""Execute lessons with nbclient: real outputs, or an error that says where.
+
+Each execution gets a fresh kernel of the project's interpreter, its own ROS
+domain (isolation.py), the snippets workspace sourced, and a scratch working
+folder shaped like a student's workspace (``src`` -> ``snippets/``).  When
+the kernel is gone, processes the lesson left running are stopped and the
+lesson fails: lessons must clean up after themselves.
+"""
+from __future__ import annotations
+
+import copy
+import multiprocessing
+import os
+import shutil
+import tempfile
+import uuid
+from concurrent.futures import ProcessPoolExecutor
+from pathlib import Path
+
+import nbformat
+from jupyter_client.kernelspec import KernelSpecManager
+from jupyter_client.manager import AsyncKernelManager
+from nbclient import NotebookClient
+from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
+from traitlets import default
+
+from . import cache, paths, reaper
+from .environment import ros_env
+from .isolation import acquire_domain
+from .lessons import Lesson, load
+
+CELL_TIMEOUT = 180  # seconds; a cell that runs longer is reported as hung
+JOBS = 2
+
+
+class NativeKernelManager(AsyncKernelManager):
+    """Always the native kernel of this interpreter (the project's .venv), never a
+    "python3" kernel that some other tool registered for the user."""
+
+    @default("transport")
+    def _transport_default(self) -> str:
+        return "ipc"  # unix sockets: the kernel is reachable from this machine only
+
+    @default("ip")
+    def _ip_default(self) -> str:
+        # An absolute socket path: the kernel runs in another working directory.
+        return os.path.join(tempfile.gettempdir(), f"textbook-kernel-{uuid.uuid4().hex[:12]}")
+
+    @default("kernel_spec_manager")
+    def _kernel_spec_manager_default(self) -> KernelSpecManager:
+        return KernelSpecManager(kernel_dirs=[])
+
+
+class LessonExecutionError(RuntimeError):
+    """A cell of a lesson failed, timed out, or the lesson left processes behind."""
+
+
+def _cell_line(lesson: Lesson, cell: nbformat.NotebookNode) -> int | None:
+    """1-based line of the lesson file where ``cell`` starts (best effort)."""
+    first = next((line for line in cell.source.splitlines() if line.strip()), None)
+    if first is None:
+        return None
+    for number, line in enumerate(lesson.text.splitlines(), start=1):
+        if line.strip() == first.strip():
+            return number
+    return None
+
+
+def _output_tail(cell: nbformat.NotebookNode, lines: int = 15) -> str:
+    text = "".join(out.get("text", "") for out in cell.get("outputs", [])
+                   if out.get("output_type") == "stream")
+    tail = text.rstrip().splitlines()[-lines:]
+    return "\n".join("    | " + line for line in tail)
+
+
+def _failure(lesson: Lesson, notebook: nbformat.NotebookNode, index: int | None,
+             error: str) -> LessonExecutionError:
+    if index is None:
+        return LessonExecutionError(f"{lesson.source}: {error}")
+    cell = notebook.cells[index]
+    line = _cell_line(lesson, cell)
+    where = f"{lesson.source}:{line}" if line else lesson.source
+    first = cell.source.strip().splitlines()[0] if cell.source.strip() else ""
+    message = f"{where}: cell {index + 1} ({first!r}) failed: {error}"
+    tail = _output_tail(cell)
+    return LessonExecutionError(message + ("\n  output before the error:\n" + tail if tail else ""))
+
+
+def _workdir(lesson: Lesson, token: str) -> Path:
+    """A fresh folder like ``~/ros2_ws`` with ``src`` pointing at the snippets."""
+    folder = paths.RUNS / f"{lesson.path.stem}-{token}"
+    folder.mkdir(parents=True)
+    (folder / "src").symlink_to(paths.SNIPPETS, target_is_directory=True)
+    return folder
+
+
+def execute(lesson: Lesson, timeout: int = CELL_TIMEOUT) -> nbformat.NotebookNode:
+    """Run every cell of ``lesson`` in a new kernel; returns the executed notebook."""
+    notebook = copy.deepcopy(lesson.notebook)
+    with acquire_domain() as lease:
+        env = ros_env(lease)
+        workdir = _workdir(lesson, lease.token)
+        current: dict[str, int | None] = {"index": None}
+        client = NotebookClient(
+            notebook, kernel_manager_class=NativeKernelManager, timeout=timeout,
+            kernel_name="python3",
+            allow_errors=False, coalesce_streams=True,
+            resources={"metadata": {"path": str(workdir)}},
+            on_cell_execute=lambda cell, cell_index: current.update(index=cell_index))
+        try:
+            client.execute(env=env)
+        except CellTimeoutError:
+            raise _failure(lesson, notebook, current["index"],
+                           f"no result after {timeout} s (hung?)") from None
+        except CellExecutionError as error:
+            raise _failure(lesson, notebook, current["index"],
+                           f"{error.ename}: {error.evalue}") from None
+        except DeadKernelError as error:
+            raise _failure(lesson, notebook, current["index"],
+                           f"the kernel died: {error}") from None
+        finally:
+            leftovers = reaper.reap([lease.token])
+            shutil.rmtree(workdir, ignore_errors=True)
+        if leftovers:
+            raise LessonExecutionError(
+                f"{lesson.source}: processes were still running after the last cell "
+                f"(stopped them; stop what a lesson starts):\n  " + "\n  ".join(leftovers))
+    return notebook
+
+
+def executed(lesson: Lesson) -> nbformat.NotebookNode:
+    """The executed notebook of ``lesson``: from the cache, or by running it."""
+    key = cache.lesson_key(lesson)
+    with cache.exclusive(key):
+        hit = cache.cached(key)
+        if hit is not None:
+            return hit
+        notebook = execute(lesson)
+        cache.store(key, notebook)
+        return notebook
+
+
+def publish(lesson: Lesson) -> Path:
+    """Execute (or fetch) ``lesson`` and place it under build/notebooks for the site."""
+    return cache.write_atomic(executed(lesson), paths.NOTEBOOKS / lesson.site_path)
+
+
+def _publish_path(path: str) -> str:
+    return str(publish(load(Path(path))))
+
+
+def publish_all(lessons: list[Lesson], jobs: int = JOBS) -> dict[str, Path]:
+    """Publish every lesson, ``jobs`` at a time; raises one error listing all failures."""
+    results: dict[str, Path] = {}
+    failures: list[str] = []
+    stale = [lesson for lesson in lessons if cache.cached(cache.lesson_key(lesson)) is None]
+    for lesson in lessons:
+        if all(lesson is not other for other in stale):
+            results[lesson.source] = publish(lesson)
+    if len(stale) == 1 or jobs <= 1:
+        for lesson in stale:
+            try:
+                results[lesson.source] = publish(lesson)
+            except LessonExecutionError as error:
+                failures.append(str(error))
+    elif stale:
+        # "spawn": the caller may be a threaded server; forking it is unsafe.
+        context = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
+            futures = {lesson.source: pool.submit(_publish_path, str(lesson.path))
+                       for lesson in stale}
+            for source, future in futures.items():
+                try:
+                    results[source] = Path(future.result())
+                except LessonExecutionError as error:
+                    failures.append(str(error))
+    if failures:
+        raise LessonExecutionError("\n".join(failures))
+    return results

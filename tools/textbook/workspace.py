@@ -1,0 +1,109 @@
+"""The snippets workspace: ``snippets/`` built with colcon into ``build/ws``.
+
+Built normally (not ``--symlink-install``): like a student's workspace, the
+installed copy only changes when colcon runs, which lesson 6.4 relies on.
+Rebuilt from clean only when the content of ``snippets/`` (or the Python
+environment) changed; a file lock makes parallel runs wait for one build.
+"""
+from __future__ import annotations
+
+import fcntl
+import functools
+import os
+import shutil
+import subprocess
+import sys
+from contextlib import contextmanager
+from pathlib import Path
+
+from . import paths
+from .fingerprint import hash_paths, hash_text
+
+INSTALL = paths.WORKSPACE / "install"
+_STAMP = paths.WORKSPACE / ".snippets-hash"
+
+
+class WorkspaceBuildError(RuntimeError):
+    """colcon failed; the message carries its output."""
+
+
+def workspace_hash() -> str:
+    """Changes whenever a snippet, the pinned packages or the interpreter change."""
+    lock = paths.ROOT / "requirements" / "lock.txt"
+    return hash_text(hash_paths([paths.SNIPPETS], base=paths.ROOT),
+                     lock.read_text() if lock.exists() else "", sys.prefix)
+
+
+@contextmanager
+def _build_lock():
+    paths.BUILD.mkdir(parents=True, exist_ok=True)
+    with open(paths.BUILD / "ws.lock", "w") as handle:
+        fcntl.flock(handle, fcntl.LOCK_EX)
+        yield
+
+
+def colcon_command() -> list[str]:
+    """The colcon call: the student's ``colcon build``, pointed at our folders."""
+    ws = paths.WORKSPACE
+    return [str(paths.VENV_BIN / "colcon"), "--log-base", str(ws / "log"), "build",
+            "--base-paths", str(paths.SNIPPETS),
+            "--build-base", str(ws / "build"), "--install-base", str(INSTALL)]
+
+
+def ensure_built() -> Path:
+    """Build ``snippets/`` unless the install is current; returns the install folder."""
+    with _build_lock():
+        wanted = workspace_hash()
+        if (INSTALL / "setup.bash").exists() and _STAMP.exists() \
+                and _STAMP.read_text() == wanted:
+            return INSTALL
+        for sub in ("build", "install", "log"):
+            shutil.rmtree(paths.WORKSPACE / sub, ignore_errors=True)
+        paths.WORKSPACE.mkdir(parents=True, exist_ok=True)
+        env = dict(os.environ, PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
+        result = subprocess.run(colcon_command(), cwd=paths.WORKSPACE, env=env,
+                                capture_output=True, text=True, timeout=600)
+        if result.returncode != 0:
+            raise WorkspaceBuildError(
+                f"colcon build of snippets/ failed (exit {result.returncode}); logs in "
+                f"{paths.rel(paths.WORKSPACE / 'log')}\n{result.stdout[-4000:]}"
+                f"{result.stderr[-4000:]}")
+        _STAMP.write_text(wanted)
+        return INSTALL
+
+
+@functools.lru_cache(maxsize=8)
+def _sourced(install: str, base_items: tuple[tuple[str, str], ...]) -> tuple[tuple[str, str], ...]:
+    script = f'source "{install}/setup.bash" >/dev/null && env -0'
+    out = subprocess.run(["bash", "-c", script], env=dict(base_items), check=True,
+                         capture_output=True, timeout=60).stdout
+    pairs = (entry.split(b"=", 1) for entry in out.split(b"\0") if b"=" in entry)
+    return tuple((k.decode(), v.decode()) for k, v in pairs)
+
+
+def sourced_env(base: dict[str, str], install: Path = INSTALL) -> dict[str, str]:
+    """``base`` after ``source install/setup.bash``, as a student's shell would have it.
+
+    Sourcing is done by bash itself (the real setup script), once per process
+    and base environment.
+    """
+    env = dict(_sourced(str(install), tuple(sorted(base.items()))))
+    for noise in ("_", "SHLVL", "PWD", "OLDPWD"):
+        env.pop(noise, None)
+        if noise in base:
+            env[noise] = base[noise]
+    return env
+
+
+def installed_executables() -> dict[str, list[str]]:
+    """``{package: [executable, ...]}`` for every package of the workspace.
+
+    Read from the install tree, where ``ros2 run`` looks (``lib/<package>/``).
+    """
+    found: dict[str, list[str]] = {}
+    for package_dir in sorted(p for p in INSTALL.iterdir() if p.is_dir()):
+        lib = package_dir / "lib" / package_dir.name
+        if lib.is_dir():
+            found[package_dir.name] = sorted(
+                f.name for f in lib.iterdir() if f.is_file() and os.access(f, os.X_OK))
+    return found
