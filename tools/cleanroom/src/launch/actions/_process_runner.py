@@ -1,0 +1,197 @@
+"""Start one OS process and watch it from the asyncio loop.
+
+Output pipes (or pseudo-terminals with emulate_tty) are read with
+`loop.add_reader`, and the exit is noticed through a pidfd (Linux >= 5.3),
+falling back to a waiting thread.  This keeps the loop free of child-watcher
+threads per process and makes every start cheap.
+
+Every child gets PR_SET_PDEATHSIG=SIGKILL so that it dies with the launch
+even when the launch itself is killed or crashes.
+"""
+from __future__ import annotations
+
+import asyncio
+import ctypes
+import os
+import pty
+import signal
+import subprocess
+import threading
+from typing import Callable, Dict, List, Optional
+
+_PR_SET_PDEATHSIG = 1
+_EXIT_GRACE_SECONDS = 0.5  # how long to wait for pipes held open by grandchildren
+
+try:
+    _libc: Optional[ctypes.CDLL] = ctypes.CDLL(None, use_errno=True)
+except OSError:  # pragma: no cover - not Linux/glibc
+    _libc = None
+
+
+def die_with_parent(parent_pid: int) -> None:
+    """preexec_fn: ask the kernel to SIGKILL the child when its parent thread dies."""
+    if _libc is not None:
+        _libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+    if os.getppid() != parent_pid:  # the parent died between fork and prctl
+        os._exit(1)
+
+
+class RunningProcess:
+    """One child process whose output and exit are reported through callbacks.
+
+    `on_output(fd, data)` gets raw chunks (fd 1 or 2); `on_exit(returncode)`
+    is called once, after the remaining output has been delivered.
+    """
+
+    def __init__(self, loop: asyncio.AbstractEventLoop, cmd: List[str], *,
+                 cwd: Optional[str], env: Dict[str, str], shell: bool, emulate_tty: bool,
+                 on_output: Callable[[int, bytes], None],
+                 on_exit: Callable[[int], None]) -> None:
+        self._loop = loop
+        self._cmd = cmd
+        self._cwd = cwd
+        self._env = env
+        self._shell = shell
+        self._emulate_tty = emulate_tty
+        self._on_output = on_output
+        self._on_exit = on_exit
+        self._popen: Optional[subprocess.Popen] = None
+        self._readers: Dict[int, int] = {}  # our fd -> child's fd number (1 or 2)
+        self._pidfd: Optional[int] = None
+        self._returncode: Optional[int] = None
+        self._finished = False
+        self._grace: Optional[asyncio.TimerHandle] = None
+
+    @property
+    def pid(self) -> int:
+        """The child's pid."""
+        assert self._popen is not None
+        return self._popen.pid
+
+    @property
+    def returncode(self) -> Optional[int]:
+        """The exit code once the child has exited."""
+        return self._returncode
+
+    @property
+    def running(self) -> bool:
+        """True until the child has exited."""
+        return self._popen is not None and self._returncode is None
+
+    def start(self) -> None:
+        """Fork and exec the child; raises OSError if it cannot be started."""
+        parents: List[int] = []
+        children: List[int] = []
+        for _ in (1, 2):
+            if self._emulate_tty:
+                parent_fd, child_fd = pty.openpty()
+            else:
+                parent_fd, child_fd = os.pipe()
+            parents.append(parent_fd)
+            children.append(child_fd)
+        me = os.getpid()
+        args = ' '.join(self._cmd) if self._shell else self._cmd
+        try:
+            self._popen = subprocess.Popen(
+                args, shell=self._shell, cwd=self._cwd, env=self._env,
+                stdin=subprocess.PIPE, stdout=children[0], stderr=children[1],
+                preexec_fn=lambda: die_with_parent(me), close_fds=True)
+        except BaseException:
+            for fd in parents:
+                os.close(fd)
+            raise
+        finally:
+            for fd in children:
+                os.close(fd)
+        for number, fd in zip((1, 2), parents, strict=True):
+            os.set_blocking(fd, False)
+            self._readers[fd] = number
+            self._loop.add_reader(fd, self._read, fd)
+        self._watch_exit()
+
+    def _watch_exit(self) -> None:
+        try:
+            self._pidfd = os.pidfd_open(self.pid)
+        except (AttributeError, OSError):
+            threading.Thread(target=self._wait_in_thread, daemon=True,
+                             name=f'wait-{self.pid}').start()
+            return
+        self._loop.add_reader(self._pidfd, self._reap)
+
+    def _wait_in_thread(self) -> None:
+        assert self._popen is not None
+        self._popen.wait()
+        try:
+            self._loop.call_soon_threadsafe(self._reap)
+        except RuntimeError:  # loop already closed
+            pass
+
+    def _reap(self) -> None:
+        assert self._popen is not None
+        returncode = self._popen.poll()
+        if returncode is None:
+            return
+        if self._pidfd is not None:
+            self._loop.remove_reader(self._pidfd)
+            os.close(self._pidfd)
+            self._pidfd = None
+        self._returncode = returncode
+        self._close_stdin()
+        if self._readers:
+            self._grace = self._loop.call_later(_EXIT_GRACE_SECONDS, self._finish)
+        else:
+            self._finish()
+
+    def _read(self, fd: int) -> None:
+        try:
+            data = os.read(fd, 65536)
+        except BlockingIOError:
+            return
+        except OSError:  # EIO: the pty's other side is closed
+            data = b''
+        if data:
+            self._on_output(self._readers[fd], data)
+            return
+        self._close_reader(fd)
+        if not self._readers and self._returncode is not None:
+            self._finish()
+
+    def _close_reader(self, fd: int) -> None:
+        self._loop.remove_reader(fd)
+        os.close(fd)
+        del self._readers[fd]
+
+    def _close_stdin(self) -> None:
+        if self._popen is not None and self._popen.stdin is not None:
+            try:
+                self._popen.stdin.close()
+            except OSError:
+                pass
+
+    def _finish(self) -> None:
+        if self._finished:
+            return
+        self._finished = True
+        if self._grace is not None:
+            self._grace.cancel()
+        for fd in list(self._readers):
+            self._close_reader(fd)
+        assert self._returncode is not None
+        self._on_exit(self._returncode)
+
+    def send_signal(self, signum: int) -> None:
+        """Send a signal unless the child has already exited."""
+        if self.running:
+            try:
+                os.kill(self.pid, signum)
+            except ProcessLookupError:
+                pass
+
+    def write_stdin(self, data: bytes) -> None:
+        """Write to the child's stdin (ignored once it is closed)."""
+        if self._popen is not None and self._popen.stdin is not None and self.running:
+            try:
+                self._popen.stdin.write(data)
+                self._popen.stdin.flush()
+            except (BrokenPipeError, ValueError):
+                pass

@@ -1,0 +1,102 @@
+"""Change the environment processes get, in the current scope."""
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, List
+
+from ..action import Action
+from ..substitution import Substitution
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+def _subs(value: object) -> List[Substitution]:
+    from ..utilities import normalize_to_list_of_substitutions
+
+    return normalize_to_list_of_substitutions(value)
+
+
+class SetEnvironmentVariable(Action):
+    """Set variable `name` to `value` for processes started later in this scope."""
+
+    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType,
+                 **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        self.__name = _subs(name)
+        self.__value = _subs(value)
+
+    @property
+    def name(self) -> List[Substitution]:
+        """The variable name, as substitutions."""
+        return self.__name
+
+    @property
+    def value(self) -> List[Substitution]:
+        """The value, as substitutions."""
+        return self.__value
+
+    def execute(self, context: LaunchContext) -> None:
+        """Set it."""
+        from ..utilities import perform_substitutions
+
+        context.environment[perform_substitutions(context, self.__name)] = \
+            perform_substitutions(context, self.__value)
+
+
+class UnsetEnvironmentVariable(Action):
+    """Remove variable `name` for processes started later in this scope."""
+
+    def __init__(self, name: SomeSubstitutionsType, **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        self.__name = _subs(name)
+
+    @property
+    def name(self) -> List[Substitution]:
+        """The variable name, as substitutions."""
+        return self.__name
+
+    def execute(self, context: LaunchContext) -> None:
+        """Unset it."""
+        from ..utilities import perform_substitutions
+
+        context.environment.pop(perform_substitutions(context, self.__name), None)
+
+
+class AppendEnvironmentVariable(Action):
+    """Append (or prepend) `value` to a path-like variable, with `separator` between."""
+
+    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType, *,
+                 prepend: object = False, separator: SomeSubstitutionsType = os.pathsep,
+                 **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        self.__name = _subs(name)
+        self.__value = _subs(value)
+        self.__prepend = prepend if isinstance(prepend, bool) else _subs(prepend)
+        self.__separator = _subs(separator)
+
+    @property
+    def name(self) -> List[Substitution]:
+        """The variable name, as substitutions."""
+        return self.__name
+
+    @property
+    def value(self) -> List[Substitution]:
+        """The value, as substitutions."""
+        return self.__value
+
+    def execute(self, context: LaunchContext) -> None:
+        """Append or prepend."""
+        from ..conditions.evaluate_condition_expression import evaluate_condition_expression
+        from ..utilities import perform_substitutions
+
+        name = perform_substitutions(context, self.__name)
+        value = perform_substitutions(context, self.__value)
+        separator = perform_substitutions(context, self.__separator)
+        prepend = self.__prepend if isinstance(self.__prepend, bool) \
+            else evaluate_condition_expression(context, self.__prepend)
+        current = context.environment.get(name)
+        if current:
+            value = value + separator + current if prepend else current + separator + value
+        context.environment[name] = value

@@ -1,0 +1,91 @@
+"""Register or unregister an event handler, and emit events."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, List, Sequence, Tuple
+
+from ..action import Action
+from ..event import Event
+from ..event_handler import BaseEventHandler
+from ..launch_description_entity import LaunchDescriptionEntity
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+
+
+class RegisterEventHandler(Action):
+    """Add `event_handler` to the launch when visited."""
+
+    def __init__(self, event_handler: BaseEventHandler, **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        if not isinstance(event_handler, BaseEventHandler):
+            raise TypeError(f"RegisterEventHandler expected an event handler, "
+                            f"got '{type(event_handler)}'")
+        self.__event_handler = event_handler
+
+    @property
+    def event_handler(self) -> BaseEventHandler:
+        """The handler."""
+        return self.__event_handler
+
+    def describe_conditional_sub_entities(
+            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+        """The entities the handler may produce."""
+        text, entities = self.__event_handler.describe()
+        return [(text, entities)] if entities else []
+
+    def execute(self, context: LaunchContext) -> None:
+        """Register the handler."""
+        context.register_event_handler(self.__event_handler)
+
+
+class UnregisterEventHandler(Action):
+    """Remove `event_handler` from the launch when visited."""
+
+    def __init__(self, event_handler: BaseEventHandler, **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        self.__event_handler = event_handler
+
+    @property
+    def event_handler(self) -> BaseEventHandler:
+        """The handler."""
+        return self.__event_handler
+
+    def execute(self, context: LaunchContext) -> None:
+        """Unregister the handler (RuntimeError if it was not registered)."""
+        try:
+            context.unregister_event_handler(self.__event_handler)
+        except ValueError:
+            raise RuntimeError(f"Cannot unregister event handler '{self.__event_handler}' "
+                               'which is not registered') from None
+
+
+class EmitEvent(Action):
+    """Emit `event` when visited."""
+
+    def __init__(self, *, event: Event, **kwargs: object) -> None:
+        super().__init__(**kwargs)
+        if not isinstance(event, Event):
+            raise TypeError(f"EmitEvent expected a launch Event, got '{type(event)}'")
+        self.__event = event
+
+    @property
+    def event(self) -> Event:
+        """The event."""
+        return self.__event
+
+    def describe(self) -> str:
+        """Return a description."""
+        return f'EmitEvent(event={type(self.__event).__name__})'
+
+    def execute(self, context: LaunchContext) -> None:
+        """Queue the event."""
+        context.emit_event_sync(self.__event)
+
+
+class Shutdown(EmitEvent):
+    """Shut the launch down, giving `reason`."""
+
+    def __init__(self, *, reason: str = 'reason not given', **kwargs: object) -> None:
+        from ..events import Shutdown as ShutdownEvent
+
+        super().__init__(event=ShutdownEvent(reason=reason), **kwargs)

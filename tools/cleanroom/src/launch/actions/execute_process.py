@@ -1,0 +1,461 @@
+"""Run a command as a process of the launch."""
+from __future__ import annotations
+
+import asyncio
+import os
+import re
+import shlex
+import signal
+from typing import (
+    TYPE_CHECKING,
+    Dict,
+    Iterable,
+    List,
+    Mapping,
+    Optional,
+    Sequence,
+    Tuple,
+    Union,
+)
+
+from ..action import Action
+from ..event import Event
+from ..event_handler import BaseEventHandler
+from ..events import Shutdown
+from ..events.process import (
+    ProcessExited,
+    ProcessIO,
+    ProcessStarted,
+    ProcessStdin,
+    ShutdownProcess,
+    SignalProcess,
+)
+from ..launch_description_entity import LaunchDescriptionEntity
+from ..substitution import Substitution
+from ..substitutions.launch_configuration import LaunchConfiguration
+from ._process_runner import RunningProcess
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+SubstitutionsList = List[Substitution]
+
+# Overridable from the command line, e.g. `ros2 launch ... sigterm_timeout:=10`.
+_DEFAULT_SIGTERM_TIMEOUT = LaunchConfiguration('sigterm_timeout', default=5)
+_DEFAULT_SIGKILL_TIMEOUT = LaunchConfiguration('sigkill_timeout', default=5)
+
+
+def _subs(value: object) -> SubstitutionsList:
+    from ..utilities import normalize_to_list_of_substitutions
+
+    return normalize_to_list_of_substitutions(value)
+
+
+def _perform(context: LaunchContext, subs: SubstitutionsList) -> str:
+    from ..utilities import perform_substitutions
+
+    return perform_substitutions(context, subs)
+
+
+def _flag(context: LaunchContext, value: Union[bool, SubstitutionsList]) -> bool:
+    from ..conditions.evaluate_condition_expression import evaluate_condition_expression
+
+    return value if isinstance(value, bool) else evaluate_condition_expression(context, value)
+
+
+class _ProcessEvents(BaseEventHandler):
+    """Routes Shutdown, ShutdownProcess, SignalProcess and ProcessStdin to one process."""
+
+    def __init__(self, action: ExecuteProcess) -> None:
+        self.__action = action
+        super().__init__(matcher=self.__matches)
+
+    def __matches(self, event: Event) -> bool:
+        if isinstance(event, Shutdown):
+            return True
+        if isinstance(event, (ShutdownProcess, SignalProcess, ProcessStdin)):
+            return bool(event.process_matcher(self.__action))
+        return False
+
+    def handle(self, event: Event, context: LaunchContext) -> None:
+        self.__action._handle_event(event, context)
+        return None
+
+
+class ExecuteProcess(Action):
+    """Start a process when visited; report its start, output and exit as events.
+
+    `cmd` is a list of arguments, each text or substitutions; it is kept as a
+    mutable `list[list[Substitution]]` so that subclasses (launch_ros' Node)
+    can append arguments in their own execute() before calling this one.
+    The process is named `<name or basename of cmd[0]>-N`, N counting every
+    process started by the LaunchService.  On shutdown it gets SIGINT, then
+    SIGTERM after `sigterm_timeout` seconds, then SIGKILL after a further
+    `sigkill_timeout` seconds.
+    """
+
+    def __init__(
+        self, *,
+        cmd: Iterable[SomeSubstitutionsType],
+        prefix: Optional[SomeSubstitutionsType] = None,
+        name: Optional[SomeSubstitutionsType] = None,
+        cwd: Optional[SomeSubstitutionsType] = None,
+        env: Optional[Union[Mapping, Iterable[Tuple]]] = None,
+        additional_env: Optional[Union[Mapping, Iterable[Tuple]]] = None,
+        shell: bool = False,
+        sigterm_timeout: SomeSubstitutionsType = _DEFAULT_SIGTERM_TIMEOUT,
+        sigkill_timeout: SomeSubstitutionsType = _DEFAULT_SIGKILL_TIMEOUT,
+        emulate_tty: Union[bool, SomeSubstitutionsType] = False,
+        output: SomeSubstitutionsType = 'log',
+        output_format: str = '[{this.process_description.final_name}] {line}',
+        cached_output: bool = False,
+        log_cmd: bool = False,
+        on_exit: object = None,
+        respawn: Union[bool, SomeSubstitutionsType] = False,
+        respawn_delay: Optional[float] = None,
+        respawn_max_retries: int = -1,
+        **kwargs: object,
+    ) -> None:
+        super().__init__(**kwargs)
+        if isinstance(cmd, (str, Substitution)):
+            cmd = [cmd]
+        self.__cmd: List[SubstitutionsList] = [_subs(token) for token in cmd]
+        self.__prefix = None if prefix is None else _subs(prefix)
+        self.__name = None if name is None else _subs(name)
+        self.__cwd = None if cwd is None else _subs(cwd)
+        self.__env = None if env is None else self.__pairs(env)
+        self.__additional_env = None if additional_env is None else self.__pairs(additional_env)
+        self.__shell = shell
+        self.__sigterm_timeout = _subs(str(sigterm_timeout)) \
+            if isinstance(sigterm_timeout, (int, float)) else _subs(sigterm_timeout)
+        self.__sigkill_timeout = _subs(str(sigkill_timeout)) \
+            if isinstance(sigkill_timeout, (int, float)) else _subs(sigkill_timeout)
+        self.__emulate_tty = emulate_tty if isinstance(emulate_tty, bool) else _subs(emulate_tty)
+        self.__output = _subs(output)
+        self.__output_format = output_format
+        self.__cached_output = cached_output
+        self.__log_cmd = log_cmd
+        self.__on_exit = on_exit
+        self.__respawn = respawn if isinstance(respawn, bool) else _subs(respawn)
+        self.__respawn_delay = respawn_delay
+        self.__respawn_max_retries = respawn_max_retries
+        # state once executed
+        self.__context: Optional[LaunchContext] = None
+        self.__final_name: Optional[str] = None
+        self.__final_cmd: Optional[List[str]] = None
+        self.__final_cwd: Optional[str] = None
+        self.__final_env: Optional[Dict[str, str]] = None
+        self.__process: Optional[RunningProcess] = None
+        self.__future: Optional[asyncio.Future] = None
+        self.__events_handler: Optional[_ProcessEvents] = None
+        self.__shutdown_requested = False
+        self.__timers: List[asyncio.TimerHandle] = []
+        self.__respawn_handle: Optional[asyncio.TimerHandle] = None
+        self.__respawn_count = 0
+        self.__line_buffers: Dict[int, bytes] = {}
+        self.__stdout_cache: List[str] = []
+        self.__stderr_cache: List[str] = []
+        self.__output_loggers: Optional[Tuple] = None
+        self.__logger = None
+
+    @staticmethod
+    def __pairs(env: Union[Mapping, Iterable[Tuple]]) -> List[Tuple[SubstitutionsList,
+                                                                      SubstitutionsList]]:
+        items = env.items() if isinstance(env, Mapping) else env
+        return [(_subs(k), _subs(v)) for k, v in items]
+
+    # --- public properties --------------------------------------------------
+    @property
+    def cmd(self) -> List[SubstitutionsList]:
+        """The command; a mutable list of argument substitution lists."""
+        return self.__cmd
+
+    @property
+    def name(self) -> object:
+        """The final name (e.g. 'talker-1') once started, else the given name."""
+        return self.__final_name if self.__final_name is not None else self.__name
+
+    @property
+    def prefix(self) -> Optional[SubstitutionsList]:
+        """The prefix command, as substitutions."""
+        return self.__prefix
+
+    @property
+    def cwd(self) -> Optional[SubstitutionsList]:
+        """The working directory, as substitutions."""
+        return self.__cwd
+
+    @property
+    def env(self) -> Optional[List[Tuple[SubstitutionsList, SubstitutionsList]]]:
+        """The replacement environment, as substitution pairs."""
+        return self.__env
+
+    @property
+    def additional_env(self) -> Optional[List[Tuple[SubstitutionsList, SubstitutionsList]]]:
+        """Variables added to the environment, as substitution pairs."""
+        return self.__additional_env
+
+    @property
+    def shell(self) -> bool:
+        """True if the command runs through a shell."""
+        return self.__shell
+
+    @property
+    def output(self) -> SubstitutionsList:
+        """The output setting, as substitutions."""
+        return self.__output
+
+    @property
+    def process_details(self) -> Optional[Dict[str, object]]:
+        """name, cmd, cwd, env and pid of the started process (None before start)."""
+        if self.__final_name is None:
+            return None
+        return {'name': self.__final_name, 'cmd': self.__final_cmd, 'cwd': self.__final_cwd,
+                'env': self.__final_env,
+                'pid': self.__process.pid if self.__process is not None else None}
+
+    @property
+    def return_code(self) -> Optional[int]:
+        """The exit code of the last run, if it has exited."""
+        return self.__process.returncode if self.__process is not None else None
+
+    def get_stdout(self) -> str:
+        """Cached stdout (requires cached_output=True)."""
+        if not self.__cached_output:
+            raise RuntimeError('cached output must be true to be able to get stdout, '
+                               f"proc '{self.__final_name}'")
+        return ''.join(self.__stdout_cache)
+
+    def get_stderr(self) -> str:
+        """Cached stderr (requires cached_output=True)."""
+        if not self.__cached_output:
+            raise RuntimeError('cached output must be true to be able to get stderr, '
+                               f"proc '{self.__final_name}'")
+        return ''.join(self.__stderr_cache)
+
+    def describe(self) -> str:
+        """Return a description of the command."""
+        def join(subs: SubstitutionsList) -> str:
+            return ' + '.join(s.describe() for s in subs)
+        return f"ExecuteProcess(cmd=[{', '.join(join(c) for c in self.__cmd)}])"
+
+    def describe_conditional_sub_entities(
+            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+        """The on_exit entities, if any."""
+        if self.__on_exit is None or callable(self.__on_exit):
+            return []
+        from ..event_handler import normalize_entities
+        return [('on exit', normalize_entities(self.__on_exit))]
+
+    def get_asyncio_future(self) -> Optional[asyncio.Future]:
+        """Done when the process has exited for good (no respawn pending)."""
+        return self.__future
+
+    # --- execution ------------------------------------------------------------
+    def execute(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+        """Expand the command and start the process."""
+        from ..logging import get_logger
+
+        if context.is_shutdown:
+            return None
+        self.__expand(context)
+        self.__context = context
+        self.__logger = get_logger(self.__final_name)
+        self.__events_handler = _ProcessEvents(self)
+        context.register_event_handler(self.__events_handler)
+        if self.__on_exit is not None:
+            from ..event_handlers.on_process_exit import OnProcessExit
+
+            self.__on_exit_handler = OnProcessExit(target_action=self, on_exit=self.__on_exit)
+            context.register_event_handler(self.__on_exit_handler)
+        loop = context.asyncio_loop
+        assert loop is not None, 'ExecuteProcess needs a running LaunchService'
+        self.__future = loop.create_future()
+        self.__start(context)
+        return None
+
+    def __expand(self, context: LaunchContext) -> None:
+        from ..logging import get_output_loggers
+
+        cmd = [_perform(context, token) for token in self.__cmd]
+        if not cmd or not cmd[0]:
+            raise RuntimeError('ExecuteProcess: empty command')
+        executable = cmd[0]
+        cmd = self.__prefix_words(context, executable) + cmd
+        base = _perform(context, self.__name) if self.__name is not None \
+            else os.path.basename(executable)
+        self.__final_name = f'{base}-{context._allocate_process_number()}'
+        self.__final_cmd = cmd
+        self.__final_cwd = None if self.__cwd is None else _perform(context, self.__cwd)
+        if self.__env is None:
+            env = dict(context.environment)
+        else:
+            env = {_perform(context, k): _perform(context, v) for k, v in self.__env}
+        for k, v in self.__additional_env or []:
+            env[_perform(context, k)] = _perform(context, v)
+        self.__final_env = env
+        self.__output_loggers = get_output_loggers(self.__final_name,
+                                                   _perform(context, self.__output))
+
+    def __prefix_words(self, context: LaunchContext, executable: str) -> List[str]:
+        if self.__prefix is not None:
+            return shlex.split(_perform(context, self.__prefix))
+        prefix = context.launch_configurations.get('launch-prefix', '')
+        if not prefix:
+            return []
+        pattern = context.launch_configurations.get('launch-prefix-filter')
+        if pattern and not re.search(pattern, os.path.basename(executable)):
+            return []
+        return shlex.split(str(prefix))
+
+    def __start(self, context: LaunchContext) -> None:
+        assert self.__final_cmd is not None and self.__final_env is not None
+        emulate_tty = self.__emulate_tty
+        if 'emulate_tty' in context.launch_configurations:
+            emulate_tty = _subs(str(context.launch_configurations['emulate_tty']))
+        if self.__log_cmd:
+            self.__logger.info(f"process details: cmd='{' '.join(self.__final_cmd)}', "
+                               f"cwd='{self.__final_cwd}', "
+                               f'custom_env?={self.__env is not None}')
+        process = RunningProcess(
+            context.asyncio_loop, self.__final_cmd, cwd=self.__final_cwd,
+            env=self.__final_env, shell=self.__shell,
+            emulate_tty=_flag(context, emulate_tty),
+            on_output=self.__on_output, on_exit=self.__on_process_exit)
+        try:
+            process.start()
+        except OSError as exc:
+            self.__logger.error(f'exception occurred while executing process: {exc}')
+            self.__complete()
+            return
+        self.__process = process
+        self.__logger.info(f'process started with pid [{process.pid}]')
+        context.emit_event_sync(ProcessStarted(**self.__event_fields()))
+
+    def __event_fields(self) -> Dict[str, object]:
+        return {'action': self, 'name': self.__final_name, 'cmd': self.__final_cmd,
+                'cwd': self.__final_cwd, 'env': self.__final_env,
+                'pid': self.__process.pid if self.__process is not None else 0}
+
+    # --- output ---------------------------------------------------------------
+    def __on_output(self, fd: int, data: bytes) -> None:
+        assert self.__context is not None and self.__output_loggers is not None
+        self.__context.emit_event_sync(ProcessIO(text=data, fd=fd, **self.__event_fields()))
+        if self.__cached_output:
+            cache = self.__stdout_cache if fd == 1 else self.__stderr_cache
+            cache.append(data.decode(errors='replace'))
+        buffered = self.__line_buffers.get(fd, b'') + data
+        *lines, rest = buffered.split(b'\n')
+        self.__line_buffers[fd] = rest
+        writer = self.__output_loggers[0 if fd == 1 else 1]
+        for line in lines:
+            writer.line(line.decode(errors='replace').rstrip('\r'))
+
+    def __flush_output(self) -> None:
+        assert self.__output_loggers is not None
+        for fd, rest in self.__line_buffers.items():
+            if rest:
+                self.__output_loggers[0 if fd == 1 else 1].line(
+                    rest.decode(errors='replace').rstrip('\r'))
+        self.__line_buffers.clear()
+
+    # --- exit, respawn, shutdown ------------------------------------------------
+    def __on_process_exit(self, returncode: int) -> None:
+        context = self.__context
+        assert context is not None and self.__process is not None
+        self.__flush_output()
+        for timer in self.__timers:
+            timer.cancel()
+        self.__timers.clear()
+        pid = self.__process.pid
+        if returncode == 0:
+            self.__logger.info(f'process has finished cleanly [pid {pid}]')
+        else:
+            self.__logger.error(f'process has died [pid {pid}, exit code {returncode}, '
+                                f"cmd '{' '.join(self.__final_cmd)}'].")
+        context.emit_event_sync(ProcessExited(returncode=returncode, **self.__event_fields()))
+        if self.__should_respawn(context):
+            self.__respawn_count += 1
+            delay = self.__respawn_delay or 0.0
+            self.__respawn_handle = context.asyncio_loop.call_later(delay, self.__respawn_now)
+        else:
+            self.__complete()
+
+    def __should_respawn(self, context: LaunchContext) -> bool:
+        if context.is_shutdown or self.__shutdown_requested:
+            return False
+        if not _flag(context, self.__respawn):
+            return False
+        return self.__respawn_max_retries < 0 or \
+            self.__respawn_count < self.__respawn_max_retries
+
+    def __respawn_now(self) -> None:
+        self.__respawn_handle = None
+        if self.__context is None or self.__context.is_shutdown or self.__shutdown_requested:
+            self.__complete()
+            return
+        self.__start(self.__context)
+
+    def __complete(self) -> None:
+        context = self.__context
+        if context is not None and self.__events_handler in context._event_handlers:
+            context.unregister_event_handler(self.__events_handler)
+        if self.__future is not None and not self.__future.done():
+            self.__future.set_result(None)
+
+    def _handle_event(self, event: Event, context: LaunchContext) -> None:
+        """React to Shutdown / ShutdownProcess / SignalProcess / ProcessStdin."""
+        if isinstance(event, Shutdown):
+            send_sigint = not event.due_to_sigint or context.noninteractive
+            self.__shutdown(context, send_sigint)
+        elif isinstance(event, ShutdownProcess):
+            self.__shutdown(context, True)
+        elif isinstance(event, SignalProcess):
+            if self.__process is not None and self.__process.running:
+                self.__logger.info(f"sending signal '{event.signal_name}' to process"
+                                   f'[{self.__final_name}]')
+                self.__process.send_signal(event.signal)
+        elif isinstance(event, ProcessStdin) and self.__process is not None:
+            self.__process.write_stdin(event.text)
+
+    def __shutdown(self, context: LaunchContext, send_sigint: bool) -> None:
+        if self.__shutdown_requested:
+            return
+        self.__shutdown_requested = True
+        if self.__respawn_handle is not None:
+            self.__respawn_handle.cancel()
+            self.__respawn_handle = None
+            self.__complete()
+            return
+        if self.__process is None or not self.__process.running:
+            return
+        if send_sigint:
+            self.__signal(signal.SIGINT)
+        sigterm_timeout = _perform(context, self.__sigterm_timeout)
+        sigkill_timeout = _perform(context, self.__sigkill_timeout)
+        term_after = float(sigterm_timeout)
+        kill_after = term_after + float(sigkill_timeout)
+        loop = context.asyncio_loop
+
+        def escalate_to_sigterm() -> None:
+            if self.__process is not None and self.__process.running:
+                self.__logger.error(
+                    f"process[{self.__final_name}] failed to terminate '{sigterm_timeout}' "
+                    "seconds after receiving 'SIGINT', escalating to 'SIGTERM'")
+                self.__signal(signal.SIGTERM)
+
+        def escalate_to_sigkill() -> None:
+            if self.__process is not None and self.__process.running:
+                self.__logger.error(
+                    f"process[{self.__final_name}] failed to terminate '{kill_after}' "
+                    "seconds after receiving 'SIGTERM', escalating to 'SIGKILL'")
+                self.__signal(signal.SIGKILL)
+
+        self.__timers = [loop.call_later(term_after, escalate_to_sigterm),
+                         loop.call_later(kill_after, escalate_to_sigkill)]
+
+    def __signal(self, signum: signal.Signals) -> None:
+        assert self.__process is not None
+        self.__logger.info(f"sending signal '{signum.name}' to process[{self.__final_name}]")
+        self.__process.send_signal(signum)

@@ -1,0 +1,4 @@
+"""Jazzy import path of PopEnvironment."""
+from .scope_actions import PopEnvironment
+
+__all__ = ['PopEnvironment']

@@ -1,0 +1,4 @@
+"""Jazzy import path of PushEnvironment."""
+from .scope_actions import PushEnvironment
+
+__all__ = ['PushEnvironment']

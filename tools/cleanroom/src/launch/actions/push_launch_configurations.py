@@ -1,0 +1,4 @@
+"""Jazzy import path of PushLaunchConfigurations."""
+from .scope_actions import PushLaunchConfigurations
+
+__all__ = ['PushLaunchConfigurations']

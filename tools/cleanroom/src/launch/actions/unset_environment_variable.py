@@ -1,0 +1,4 @@
+"""Jazzy import path of UnsetEnvironmentVariable."""
+from .environment_actions import UnsetEnvironmentVariable
+
+__all__ = ['UnsetEnvironmentVariable']

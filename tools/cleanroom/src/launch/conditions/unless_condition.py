@@ -1,0 +1,28 @@
+"""Run an action only if an expression is false."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ..condition import Condition
+from .evaluate_condition_expression import evaluate_condition_expression
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class UnlessCondition(Condition):
+    """True when the expression expands to 'false' or '0' (case-insensitive)."""
+
+    def __init__(self, predicate_expression: SomeSubstitutionsType) -> None:
+        from ..utilities import normalize_to_list_of_substitutions
+
+        self.__expression = normalize_to_list_of_substitutions(predicate_expression)
+        super().__init__(predicate=self._predicate_func)
+
+    def _predicate_func(self, context: LaunchContext) -> bool:
+        return not evaluate_condition_expression(context, self.__expression)
+
+    def describe(self) -> str:
+        """Return a description."""
+        return f"UnlessCondition({' + '.join(s.describe() for s in self.__expression)})"

@@ -1,0 +1,16 @@
+"""Handle ExecutionComplete events."""
+from typing import Callable, Optional, Union
+
+from ..action import Action
+from ..events import ExecutionComplete
+from .on_action_event_base import OnActionEventBase
+
+
+class OnExecutionComplete(OnActionEventBase):
+    """React when `target_action` (or any action, if None) has completed."""
+
+    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+                 on_completion: object, **kwargs: object) -> None:
+        super().__init__(action_matcher=target_action, on_event=on_completion,
+                         target_event_cls=ExecutionComplete, target_action_cls=Action,
+                         **kwargs)

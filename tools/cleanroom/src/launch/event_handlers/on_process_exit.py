@@ -1,0 +1,18 @@
+"""Handle ProcessExited events."""
+from typing import Callable, Optional, Union
+
+from ..action import Action
+from ..events.process import ProcessExited
+from .on_action_event_base import OnActionEventBase
+
+
+class OnProcessExit(OnActionEventBase):
+    """React when `target_action`'s process (or any, if None) has exited."""
+
+    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+                 on_exit: object, **kwargs: object) -> None:
+        from ..actions.execute_process import ExecuteProcess
+
+        super().__init__(action_matcher=target_action, on_event=on_exit,
+                         target_event_cls=ProcessExited, target_action_cls=ExecuteProcess,
+                         **kwargs)

@@ -1,0 +1,31 @@
+"""Handle ProcessIO events, per stream."""
+from typing import Callable, Optional, Union
+
+from ..action import Action
+from ..event import Event
+from ..events.process import ProcessIO
+from .on_action_event_base import OnActionEventBase
+
+
+class OnProcessIO(OnActionEventBase):
+    """Call `on_stdout(event)` / `on_stderr(event)` / `on_stdin(event)` for process output.
+
+    The callables get the ProcessIO event (its `text` is bytes) and may
+    return entities.
+    """
+
+    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+                 on_stdin: Optional[Callable] = None, on_stdout: Optional[Callable] = None,
+                 on_stderr: Optional[Callable] = None, **kwargs: object) -> None:
+        from ..actions.execute_process import ExecuteProcess
+
+        self.__by_fd = {0: on_stdin, 1: on_stdout, 2: on_stderr}
+        super().__init__(action_matcher=target_action, on_event=self.__dispatch,
+                         target_event_cls=ProcessIO, target_action_cls=ExecuteProcess,
+                         **kwargs)
+
+    def _match(self, event: Event) -> bool:
+        return super()._match(event) and self.__by_fd.get(event.fd) is not None
+
+    def __dispatch(self, event: ProcessIO, context: object) -> object:
+        return self.__by_fd[event.fd](event)

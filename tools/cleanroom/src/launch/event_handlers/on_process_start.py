@@ -1,0 +1,18 @@
+"""Handle ProcessStarted events."""
+from typing import Callable, Optional, Union
+
+from ..action import Action
+from ..events.process import ProcessStarted
+from .on_action_event_base import OnActionEventBase
+
+
+class OnProcessStart(OnActionEventBase):
+    """React when `target_action`'s process (or any, if None) has started."""
+
+    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+                 on_start: object, **kwargs: object) -> None:
+        from ..actions.execute_process import ExecuteProcess
+
+        super().__init__(action_matcher=target_action, on_event=on_start,
+                         target_event_cls=ProcessStarted, target_action_cls=ExecuteProcess,
+                         **kwargs)

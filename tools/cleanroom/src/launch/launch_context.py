@@ -1,0 +1,207 @@
+"""The state a launch runs in: launch configurations, environment, locals, events."""
+from __future__ import annotations
+
+import asyncio
+import collections
+import os
+import threading
+from typing import Any, Dict, Iterable, List, Optional
+
+from .event import Event
+from .event_handler import BaseEventHandler
+
+
+class _Locals:
+    """Attribute access to the current locals, e.g. `context.locals.event`."""
+
+    def __init__(self, values: Dict[str, Any]) -> None:
+        object.__setattr__(self, '_values', values)
+
+    def __getattr__(self, name: str) -> Any:
+        try:
+            return self._values[name]
+        except KeyError:
+            raise AttributeError(f"context.locals does not contain attribute '{name}', "
+                                 f'it contains: [{", ".join(self._values)}]') from None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        raise AttributeError("context.locals is read-only; use context.extend_locals()")
+
+
+class LaunchContext:
+    """Everything actions share while a LaunchService runs.
+
+    Launch configurations and the environment given to processes are plain
+    dicts; GroupAction(scoped=True) pushes and pops copies of both, while
+    IncludeLaunchDescription does not (as in ROS 2 Jazzy).  The environment
+    starts as a copy of os.environ so that launching never changes the
+    launching process's own environment.
+    """
+
+    def __init__(self, *, argv: Optional[Iterable[str]] = None,
+                 noninteractive: bool = False) -> None:
+        self.__argv = list(argv or [])
+        self.__noninteractive = noninteractive
+        self._event_handlers: List[BaseEventHandler] = []
+        self.__events: collections.deque = collections.deque()
+        self.__wakeup: Optional[asyncio.Event] = None
+        self.__loop: Optional[asyncio.AbstractEventLoop] = None
+        self.__loop_thread: Optional[int] = None
+        self.__globals: Dict[str, Any] = {}
+        self.__locals_stack: List[Dict[str, Any]] = []
+        self.__locals: Dict[str, Any] = {}
+        self.__configurations_stack: List[Dict[str, Any]] = []
+        self.__launch_configurations: Dict[str, Any] = {}
+        self.__initial_environment = dict(os.environ)
+        self.__environment_stack: List[Dict[str, str]] = []
+        self.__environment: Dict[str, str] = dict(self.__initial_environment)
+        self.__is_shutdown = False
+        self.__process_count = 0
+
+    # --- plain properties -------------------------------------------------
+    @property
+    def argv(self) -> List[str]:
+        """The arguments given to the LaunchService."""
+        return self.__argv
+
+    @property
+    def noninteractive(self) -> bool:
+        """True when no terminal user can press Ctrl-C (SIGINT is always forwarded then)."""
+        return self.__noninteractive
+
+    @property
+    def is_shutdown(self) -> bool:
+        """True once the Shutdown event has been handled."""
+        return self.__is_shutdown
+
+    def _set_is_shutdown(self, state: bool) -> None:
+        self.__is_shutdown = state
+
+    @property
+    def asyncio_loop(self) -> Optional[asyncio.AbstractEventLoop]:
+        """The event loop the LaunchService runs on (set before anything executes)."""
+        return self.__loop
+
+    def _set_asyncio_loop(self, loop: Optional[asyncio.AbstractEventLoop]) -> None:
+        self.__loop = loop
+        self.__loop_thread = threading.get_ident() if loop is not None else None
+        self.__wakeup = asyncio.Event() if loop is not None else None
+        if self.__events and self.__wakeup is not None:
+            self.__wakeup.set()
+
+    def _allocate_process_number(self) -> int:
+        """Next N of the `name-N` process names: counts every process of this launch."""
+        self.__process_count += 1
+        return self.__process_count
+
+    # --- locals and globals -----------------------------------------------
+    @property
+    def locals(self) -> _Locals:
+        """Read-only attribute view of the current locals."""
+        return _Locals(self.__locals)
+
+    def extend_locals(self, extensions: Dict[str, Any]) -> None:
+        """Add or replace locals in the current scope."""
+        self.__locals.update(extensions)
+
+    def get_locals_as_dict(self) -> Dict[str, Any]:
+        """Return a copy of the current locals."""
+        return dict(self.__locals)
+
+    def _push_locals(self) -> None:
+        self.__locals_stack.append(dict(self.__locals))
+
+    def _pop_locals(self) -> None:
+        if not self.__locals_stack:
+            raise RuntimeError('locals stack unexpectedly empty')
+        self.__locals = self.__locals_stack.pop()
+
+    def extend_globals(self, extensions: Dict[str, Any]) -> None:
+        """Add globals, visible to all scopes."""
+        self.__globals.update(extensions)
+
+    def get_globals(self) -> Dict[str, Any]:
+        """Return the globals dict."""
+        return self.__globals
+
+    # --- launch configurations --------------------------------------------
+    @property
+    def launch_configurations(self) -> Dict[str, Any]:
+        """The launch configurations of the current scope (a mutable dict)."""
+        return self.__launch_configurations
+
+    def _push_launch_configurations(self) -> None:
+        self.__configurations_stack.append(dict(self.__launch_configurations))
+
+    def _pop_launch_configurations(self) -> None:
+        if not self.__configurations_stack:
+            raise RuntimeError('launch configurations stack unexpectedly empty')
+        self.__launch_configurations = self.__configurations_stack.pop()
+
+    # --- environment ------------------------------------------------------
+    @property
+    def environment(self) -> Dict[str, str]:
+        """The environment processes get, in the current scope (a mutable dict)."""
+        return self.__environment
+
+    def _push_environment(self) -> None:
+        self.__environment_stack.append(dict(self.__environment))
+
+    def _pop_environment(self) -> None:
+        if not self.__environment_stack:
+            raise RuntimeError('environment stack unexpectedly empty')
+        self.__environment = self.__environment_stack.pop()
+
+    def _reset_environment(self) -> None:
+        self.__environment = dict(self.__initial_environment)
+
+    # --- events -------------------------------------------------------------
+    def register_event_handler(self, event_handler: BaseEventHandler,
+                               append: bool = False) -> None:
+        """Register a handler; newest first unless `append`."""
+        if append:
+            self._event_handlers.append(event_handler)
+        else:
+            self._event_handlers.insert(0, event_handler)
+
+    def unregister_event_handler(self, event_handler: BaseEventHandler) -> None:
+        """Remove a handler; ValueError if it is not registered."""
+        self._event_handlers.remove(event_handler)
+
+    def would_handle_event(self, event: Event) -> bool:
+        """True if a registered handler matches `event`."""
+        return any(handler.matches(event) for handler in self._event_handlers)
+
+    def emit_event_sync(self, event: Event) -> None:
+        """Queue an event; safe to call from any thread."""
+        self.__events.append(event)
+        loop, wakeup = self.__loop, self.__wakeup
+        if loop is None or wakeup is None:
+            return
+        if threading.get_ident() == self.__loop_thread:
+            wakeup.set()
+        else:
+            try:
+                loop.call_soon_threadsafe(wakeup.set)
+            except RuntimeError:  # loop closed: the event is dropped with the launch
+                pass
+
+    async def emit_event(self, event: Event) -> None:
+        """Queue an event (coroutine form)."""
+        self.emit_event_sync(event)
+
+    def _next_event(self) -> Optional[Event]:
+        return self.__events.popleft() if self.__events else None
+
+    def _has_events(self) -> bool:
+        return bool(self.__events)
+
+    async def _wait_for_event(self) -> None:
+        assert self.__wakeup is not None
+        await self.__wakeup.wait()
+        self.__wakeup.clear()
+
+    # --- substitutions --------------------------------------------------------
+    def perform_substitution(self, substitution: Any) -> str:
+        """Perform one substitution in this context."""
+        return substitution.perform(self)

@@ -1,0 +1,41 @@
+"""Full path of an executable found on the launch environment's PATH."""
+from __future__ import annotations
+
+import shutil
+from typing import TYPE_CHECKING, List
+
+from ..substitution import Substitution
+from .substitution_failure import SubstitutionFailure
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class FindExecutable(Substitution):
+    """shutil.which(name) on PATH of `context.environment`; fails if not found."""
+
+    def __init__(self, *, name: SomeSubstitutionsType) -> None:
+        from ..utilities import normalize_to_list_of_substitutions
+
+        super().__init__()
+        self.__name = normalize_to_list_of_substitutions(name)
+
+    @property
+    def name(self) -> List[Substitution]:
+        """The executable name, as substitutions."""
+        return self.__name
+
+    def describe(self) -> str:
+        """Return e.g. FindExec('python3')."""
+        return f"FindExec({' + '.join(s.describe() for s in self.__name)})"
+
+    def perform(self, context: LaunchContext) -> str:
+        """Return the executable's path."""
+        from ..utilities import perform_substitutions
+
+        name = perform_substitutions(context, self.__name)
+        found = shutil.which(name, path=context.environment.get('PATH'))
+        if found is None:
+            raise SubstitutionFailure(f"executable '{name}' not found on the PATH")
+        return found

@@ -1,0 +1,57 @@
+"""Pick one of two values depending on a condition expression."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, List
+
+from ..substitution import Substitution
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class IfElseSubstitution(Substitution):
+    """`if_value` when `condition` is true ('true'/'1'), else `else_value`."""
+
+    def __init__(self, condition: SomeSubstitutionsType,
+                 if_value: SomeSubstitutionsType = '',
+                 else_value: SomeSubstitutionsType = '') -> None:
+        from ..utilities import normalize_to_list_of_substitutions
+
+        super().__init__()
+        if if_value == else_value == '':
+            raise RuntimeError('One of if_value and else_value must be specified')
+        self.__condition = normalize_to_list_of_substitutions(condition)
+        self.__if_value = normalize_to_list_of_substitutions(if_value)
+        self.__else_value = normalize_to_list_of_substitutions(else_value)
+
+    @property
+    def condition(self) -> List[Substitution]:
+        """The condition, as substitutions."""
+        return self.__condition
+
+    @property
+    def if_value(self) -> List[Substitution]:
+        """Value when true."""
+        return self.__if_value
+
+    @property
+    def else_value(self) -> List[Substitution]:
+        """Value when false."""
+        return self.__else_value
+
+    def describe(self) -> str:
+        """Return a description."""
+        def join(subs: List[Substitution]) -> str:
+            return ' + '.join(s.describe() for s in subs)
+        return (f'IfElseSubstitution({join(self.__condition)}, {join(self.__if_value)}, '
+                f'{join(self.__else_value)})')
+
+    def perform(self, context: LaunchContext) -> str:
+        """Return the chosen value."""
+        from ..conditions.evaluate_condition_expression import evaluate_condition_expression
+        from ..utilities import perform_substitutions
+
+        chosen = self.__if_value if evaluate_condition_expression(context, self.__condition) \
+            else self.__else_value
+        return perform_substitutions(context, chosen)

@@ -1,0 +1,42 @@
+"""A value from the context locals, e.g. 'event.returncode' inside an event handler."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Optional
+
+from ..substitution import Substitution
+from .substitution_failure import SubstitutionFailure
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+
+
+class LocalSubstitution(Substitution):
+    """str() of `context.locals.<expression>`."""
+
+    def __init__(self, expression: str, description: Optional[str] = None) -> None:
+        super().__init__()
+        self.__expression = expression
+        self.__description = description
+
+    @property
+    def expression(self) -> str:
+        """The expression after `context.locals.`."""
+        return self.__expression
+
+    @property
+    def description(self) -> Optional[str]:
+        """An optional description."""
+        return self.__description
+
+    def describe(self) -> str:
+        """Return the description or the expression."""
+        return self.__description or f"LocalVar('{self.__expression}')"
+
+    def perform(self, context: LaunchContext) -> str:
+        """Evaluate `context.locals.<expression>` and return its str()."""
+        try:
+            return str(eval('context.locals.' + self.__expression, {'context': context}))
+        except Exception as exc:
+            raise SubstitutionFailure(
+                f"LocalSubstitution failed to evaluate 'context.locals.{self.__expression}': "
+                f'{exc}') from exc

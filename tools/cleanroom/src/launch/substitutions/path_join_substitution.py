@@ -1,0 +1,42 @@
+"""Join path components with the platform separator."""
+from __future__ import annotations
+
+import os
+from typing import TYPE_CHECKING, Iterable, List
+
+from ..substitution import Substitution
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class PathJoinSubstitution(Substitution):
+    """os.path.join of components, each of which may itself be substitutions."""
+
+    def __init__(self, substitutions: Iterable[SomeSubstitutionsType]) -> None:
+        from ..utilities import normalize_to_list_of_substitutions
+
+        super().__init__()
+        self.__components = [normalize_to_list_of_substitutions(c) for c in substitutions]
+
+    @property
+    def substitutions(self) -> List[List[Substitution]]:
+        """The components, each a list of substitutions."""
+        return self.__components
+
+    def __truediv__(self, other: SomeSubstitutionsType) -> PathJoinSubstitution:
+        """`PathJoinSubstitution([...]) / 'file.yaml'` appends a component."""
+        return PathJoinSubstitution([*self.__components, other])
+
+    def describe(self) -> str:
+        """Return a description of the components."""
+        parts = ', '.join(' + '.join(s.describe() for s in c) for c in self.__components)
+        return f'PathJoin([{parts}])'
+
+    def perform(self, context: LaunchContext) -> str:
+        """Return the joined path."""
+        from ..utilities import perform_substitutions
+
+        parts = [perform_substitutions(context, c) for c in self.__components]
+        return os.path.join(*parts) if parts else ''

@@ -1,0 +1,61 @@
+"""Evaluate a Python expression built from substitutions."""
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any, Dict, Iterable, List
+
+from ..substitution import Substitution
+from .substitution_failure import SubstitutionFailure
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class PythonExpression(Substitution):
+    """str(eval(expression)) with the given modules available.
+
+    `math` is imported by default and its names are also available without
+    the `math.` prefix, so `pi * 2` works as in older launch files.
+    """
+
+    def __init__(self, expression: SomeSubstitutionsType,
+                 python_modules: Iterable[SomeSubstitutionsType] = ('math',)) -> None:
+        from ..utilities import normalize_to_list_of_substitutions
+
+        super().__init__()
+        self.__expression = normalize_to_list_of_substitutions(expression)
+        self.__python_modules = [normalize_to_list_of_substitutions(m) for m in python_modules]
+
+    @property
+    def expression(self) -> List[Substitution]:
+        """The expression, as substitutions."""
+        return self.__expression
+
+    @property
+    def python_modules(self) -> List[List[Substitution]]:
+        """The modules made available, as substitutions."""
+        return self.__python_modules
+
+    def describe(self) -> str:
+        """Return a description of the expression."""
+        return f"PythonExpr({' + '.join(s.describe() for s in self.__expression)})"
+
+    def perform(self, context: LaunchContext) -> str:
+        """Evaluate the expression and return str() of the result."""
+        from ..utilities import perform_substitutions
+
+        namespace: Dict[str, Any] = {}
+        for module_subs in self.__python_modules:
+            name = perform_substitutions(context, module_subs)
+            module = importlib.import_module(name)
+            if name == 'math':
+                namespace.update({k: v for k, v in vars(module).items()
+                                  if not k.startswith('_')})
+            namespace[name.split('.')[0]] = importlib.import_module(name.split('.')[0])
+        expression = perform_substitutions(context, self.__expression)
+        try:
+            return str(eval(expression, namespace))
+        except Exception as exc:
+            raise SubstitutionFailure(
+                f"PythonExpression failed to evaluate '{expression}': {exc}") from exc

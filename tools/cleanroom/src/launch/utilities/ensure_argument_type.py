@@ -1,0 +1,24 @@
+"""Type checks for constructor arguments with messages that name the argument."""
+import inspect
+from typing import Any, Iterable, Optional, Union
+
+
+def ensure_argument_type(argument: Any, types: Union[type, Iterable[type]],
+                         argument_name: str, caller: Optional[str] = None) -> None:
+    """Raise TypeError unless `argument` is an instance of one of `types`.
+
+    Catching wrong types at construction time points at the launch file line
+    that is wrong instead of failing later inside the launch.
+    """
+    if not isinstance(argument_name, str):
+        raise TypeError("argument 'argument_name' must be a str")
+    type_list = list(types) if isinstance(types, (list, tuple, set)) else [types]
+    for entry in type_list:
+        if not inspect.isclass(entry):
+            raise TypeError(f"'types' must contain classes, got '{entry!r}'")
+    if isinstance(argument, tuple(type_list)):
+        return
+    names = ', '.join(f"'{t.__name__}'" for t in type_list)
+    where = f"{caller}: " if caller else ''
+    raise TypeError(f"{where}Expected '{argument_name}' to be one of [{names}], "
+                    f"but got '{argument}' of type '{type(argument)}'")

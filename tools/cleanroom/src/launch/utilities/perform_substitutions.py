@@ -1,0 +1,12 @@
+"""Perform a list of substitutions and join the results."""
+from typing import TYPE_CHECKING, Iterable
+
+from ..substitution import Substitution
+
+if TYPE_CHECKING:
+    from ..launch_context import LaunchContext
+
+
+def perform_substitutions(context: 'LaunchContext', subs: Iterable[Substitution]) -> str:
+    """Return the concatenated text of `subs` performed in `context`."""
+    return ''.join(sub.perform(context) for sub in subs)
