@@ -38,22 +38,25 @@ def tools_fingerprint() -> str:
     return hash_text(__version__, hash_paths(sources, base=paths.ROOT), str(ros2))
 
 
-def snippet_dependencies(lesson: Lesson) -> list[Path]:
+def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]:
     """Snippet folders/files whose change must re-execute ``lesson``.
 
     Every package of snippets/ the lesson names (it includes, runs or
     launches from it), every included file, and all of snippets/ for a
     lesson that builds the workspace itself.
     """
+    root = root or paths.SNIPPETS
     if re.search(r"\bcolcon\s+build\b", lesson.text):
-        return [paths.SNIPPETS]
-    packages = [p for p in sorted(paths.SNIPPETS.iterdir()) if p.is_dir()
+        return [root]
+    packages = [p for p in sorted(root.iterdir()) if p.is_dir()
                 and re.search(rf"\b{re.escape(p.name)}\b", lesson.text)]
     return packages + [s.path for s in lesson.snippets]
 
 
-def lesson_key(lesson: Lesson) -> str:
-    return hash_text(lesson.text, hash_paths(snippet_dependencies(lesson), base=paths.ROOT),
+def lesson_key(lesson: Lesson, root: Path | None = None) -> str:
+    """The cache key of ``lesson`` (``root``: the snippets folder)."""
+    deps = snippet_dependencies(lesson, root)
+    return hash_text(lesson.text, hash_paths(deps, base=(root or paths.SNIPPETS).parent),
                      tools_fingerprint())
 
 

@@ -77,14 +77,16 @@ def _section(lines: list[str], name: str) -> list[str] | None:
     return lines[start + 1:end]
 
 
-def load_snippet(target: str, where: str = "") -> Snippet:
-    """Read ``path[#section]`` (relative to snippets/); ``where`` prefixes errors."""
+def load_snippet(target: str, where: str = "", root: Path | None = None) -> Snippet:
+    """Read ``path[#section]`` (relative to ``root``, snippets/ by default);
+    ``where`` prefixes errors."""
+    root = (root or paths.SNIPPETS).resolve()
     prefix = f"{where}: " if where else ""
     relpath, _, section = target.partition("#")
     if not relpath:
         raise IncludeError(f"{prefix}snippet include needs a path under snippets/")
-    path = (paths.SNIPPETS / relpath).resolve()
-    if not path.is_relative_to(paths.SNIPPETS.resolve()):
+    path = (root / relpath).resolve()
+    if not path.is_relative_to(root):
         raise IncludeError(f"{prefix}snippet '{target}' is outside snippets/")
     if not path.is_file():
         raise IncludeError(f"{prefix}snippet file snippets/{relpath} does not exist")
@@ -108,7 +110,7 @@ def render(snippet: Snippet) -> str:
             f"{fence}{snippet.language}\n{snippet.code}\n{fence}")
 
 
-def expand(text: str, source: str) -> tuple[str, list[Snippet]]:
+def expand(text: str, source: str, root: Path | None = None) -> tuple[str, list[Snippet]]:
     """Replace every ```{snippet} directive in ``text``; returns the new text and
     the snippets used.  ``source`` (the lesson file) is named in errors."""
     lines = text.splitlines()
@@ -120,7 +122,7 @@ def expand(text: str, source: str) -> tuple[str, list[Snippet]]:
         if fence.content.strip():
             raise IncludeError(f"{where}: a snippet include takes no content; put the "
                                f"path after {{snippet}} and close the fence")
-        snippet = load_snippet(fence.argument, where)
+        snippet = load_snippet(fence.argument, where, root)
         indent = re.match(r"\s*", lines[fence.start]).group(0)
         block = [indent + line if line else line for line in render(snippet).split("\n")]
         lines[fence.start:fence.end] = block

@@ -20,56 +20,57 @@ from . import paths
 from .fingerprint import hash_paths, hash_text
 
 INSTALL = paths.WORKSPACE / "install"
-_STAMP = paths.WORKSPACE / ".snippets-hash"
 
 
 class WorkspaceBuildError(RuntimeError):
     """colcon failed; the message carries its output."""
 
 
-def workspace_hash() -> str:
+def workspace_hash(snippets: Path = paths.SNIPPETS) -> str:
     """Changes whenever a snippet, the pinned packages or the interpreter change."""
     lock = paths.ROOT / "requirements" / "lock.txt"
-    return hash_text(hash_paths([paths.SNIPPETS], base=paths.ROOT),
+    return hash_text(hash_paths([snippets], base=snippets.parent),
                      lock.read_text() if lock.exists() else "", sys.prefix)
 
 
 @contextmanager
-def _build_lock():
-    paths.BUILD.mkdir(parents=True, exist_ok=True)
-    with open(paths.BUILD / "ws.lock", "w") as handle:
+def _build_lock(workspace: Path):
+    workspace.parent.mkdir(parents=True, exist_ok=True)
+    with open(workspace.parent / f"{workspace.name}.lock", "w") as handle:
         fcntl.flock(handle, fcntl.LOCK_EX)
         yield
 
 
-def colcon_command() -> list[str]:
+def colcon_command(snippets: Path = paths.SNIPPETS,
+                   workspace: Path = paths.WORKSPACE) -> list[str]:
     """The colcon call: the student's ``colcon build``, pointed at our folders."""
-    ws = paths.WORKSPACE
-    return [str(paths.VENV_BIN / "colcon"), "--log-base", str(ws / "log"), "build",
-            "--base-paths", str(paths.SNIPPETS),
-            "--build-base", str(ws / "build"), "--install-base", str(INSTALL)]
+    return [str(paths.VENV_BIN / "colcon"), "--log-base", str(workspace / "log"), "build",
+            "--base-paths", str(snippets), "--build-base", str(workspace / "build"),
+            "--install-base", str(workspace / "install")]
 
 
-def ensure_built() -> Path:
-    """Build ``snippets/`` unless the install is current; returns the install folder."""
-    with _build_lock():
-        wanted = workspace_hash()
-        if (INSTALL / "setup.bash").exists() and _STAMP.exists() \
-                and _STAMP.read_text() == wanted:
-            return INSTALL
+def ensure_built(snippets: Path = paths.SNIPPETS, workspace: Path = paths.WORKSPACE) -> Path:
+    """Build ``snippets`` into ``workspace`` unless its install is current; returns
+    the install folder."""
+    install, stamp = workspace / "install", workspace / ".snippets-hash"
+    with _build_lock(workspace):
+        wanted = workspace_hash(snippets)
+        if (install / "setup.bash").exists() and stamp.exists() \
+                and stamp.read_text() == wanted:
+            return install
         for sub in ("build", "install", "log"):
-            shutil.rmtree(paths.WORKSPACE / sub, ignore_errors=True)
-        paths.WORKSPACE.mkdir(parents=True, exist_ok=True)
+            shutil.rmtree(workspace / sub, ignore_errors=True)
+        workspace.mkdir(parents=True, exist_ok=True)
         env = dict(os.environ, PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
-        result = subprocess.run(colcon_command(), cwd=paths.WORKSPACE, env=env,
+        result = subprocess.run(colcon_command(snippets, workspace), cwd=workspace, env=env,
                                 capture_output=True, text=True, timeout=600)
         if result.returncode != 0:
             raise WorkspaceBuildError(
-                f"colcon build of snippets/ failed (exit {result.returncode}); logs in "
-                f"{paths.rel(paths.WORKSPACE / 'log')}\n{result.stdout[-4000:]}"
+                f"colcon build of {paths.rel(snippets)} failed (exit {result.returncode}); "
+                f"logs in {paths.rel(workspace / 'log')}\n{result.stdout[-4000:]}"
                 f"{result.stderr[-4000:]}")
-        _STAMP.write_text(wanted)
-        return INSTALL
+        stamp.write_text(wanted)
+        return install
 
 
 @functools.lru_cache(maxsize=8)
@@ -95,13 +96,13 @@ def sourced_env(base: dict[str, str], install: Path = INSTALL) -> dict[str, str]
     return env
 
 
-def installed_executables() -> dict[str, list[str]]:
+def installed_executables(install: Path = INSTALL) -> dict[str, list[str]]:
     """``{package: [executable, ...]}`` for every package of the workspace.
 
     Read from the install tree, where ``ros2 run`` looks (``lib/<package>/``).
     """
     found: dict[str, list[str]] = {}
-    for package_dir in sorted(p for p in INSTALL.iterdir() if p.is_dir()):
+    for package_dir in sorted(p for p in install.iterdir() if p.is_dir()):
         lib = package_dir / "lib" / package_dir.name
         if lib.is_dir():
             found[package_dir.name] = sorted(

@@ -1,0 +1,76 @@
+"""``python -m textbook build|serve|test|check`` - what the Makefile runs.
+
+- build: check and execute the lessons, build the site into site/ (strict);
+- serve: the same, served on http://127.0.0.1:8000, rebuilt on changes;
+- test:  the whole test suite (pytest, two workers), pytest's exit code;
+- check: only the lesson checks (metadata, includes, inline code), no kernel.
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import subprocess
+import sys
+
+from . import paths
+
+
+def _env() -> dict[str, str]:
+    return dict(os.environ, NO_MKDOCS_2_WARNING="1")
+
+
+def _mkdocs(*args: str) -> int:
+    command = [sys.executable, "-m", "mkdocs", *args, "-f", str(paths.MKDOCS_YML)]
+    return subprocess.call(command, cwd=paths.ROOT, env=_env())
+
+
+def build(_: argparse.Namespace) -> int:
+    return _mkdocs("build", "--strict")
+
+
+def serve(options: argparse.Namespace) -> int:
+    print(f"serving the textbook on http://{options.address} (Ctrl+C stops)", flush=True)
+    return _mkdocs("serve", "--strict", "--dev-addr", options.address)
+
+
+def test(options: argparse.Namespace) -> int:
+    command = [sys.executable, "-m", "pytest", "-p", "textbook.pytest_plugin",
+               "-n", str(options.workers), *options.pytest_args]
+    return subprocess.call(command, cwd=paths.ROOT, env=_env())
+
+
+def check(_: argparse.Namespace) -> int:
+    from .lessons import load_all
+
+    try:
+        lessons = load_all()
+    except ValueError as error:
+        print(error, file=sys.stderr)
+        return 1
+    print(f"{len(lessons)} lesson(s) pass metadata, include and inline-code checks")
+    return 0
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m textbook", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+    building = commands.add_parser("build", help="build the site from executed lessons")
+    building.set_defaults(run=build)
+    serving = commands.add_parser("serve", help="build and serve the site, rebuild on changes")
+    serving.add_argument("--address", default="127.0.0.1:8000")
+    serving.set_defaults(run=serve)
+    testing = commands.add_parser("test", help="run the test suite")
+    testing.add_argument("--workers", "-n", default="2", help="pytest-xdist workers (default 2)")
+    testing.set_defaults(run=test)
+    commands.add_parser("check", help="check lessons without executing them").set_defaults(
+        run=check)
+    # Unknown arguments of `test` go to pytest, e.g. `python -m textbook test -k lessons`.
+    options, extra = parser.parse_known_args(argv)
+    if extra and options.command != "test":
+        parser.error(f"unrecognized arguments: {' '.join(extra)}")
+    options.pytest_args = extra
+    return options.run(options)
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,65 @@
+"""pytest plugin: ROS isolation for the whole test session, and no leftovers.
+
+Each test process (every xdist worker, or the single process without
+xdist) leases a ROS domain at start and exports it, so everything the tests
+start inherits a private domain and localhost-only discovery.  At the end,
+any process still carrying the session's lease token is killed and the
+session fails, naming it.  Loaded by ``python -m textbook test`` (-p) and by
+tests/conftest.py.
+"""
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from . import reaper
+from .isolation import DomainLease, acquire_domain
+
+_lease: DomainLease | None = None
+
+
+def _is_xdist_controller(config: pytest.Config) -> bool:
+    workers = getattr(config.option, "numprocesses", None)
+    return bool(workers) and not hasattr(config, "workerinput")
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    global _lease
+    if _lease is not None or _is_xdist_controller(config):
+        return  # the controller runs no tests; its workers lease their own domains
+    _lease = acquire_domain()
+    os.environ.update(_lease.env())
+    os.environ.pop("ROS_LOCALHOST_ONLY", None)
+
+
+def pytest_unconfigure(config: pytest.Config) -> None:
+    global _lease
+    if _lease is not None:
+        _lease.release()
+        _lease = None
+
+
+def pytest_report_header(config: pytest.Config) -> str | None:
+    if _lease is None:
+        return "ROS isolation: each worker leases its own ROS_DOMAIN_ID (1-89), LOCALHOST"
+    return f"ROS isolation: ROS_DOMAIN_ID={_lease.domain_id}, LOCALHOST discovery"
+
+
+@pytest.fixture(scope="session")
+def session_lease() -> DomainLease:
+    """The domain lease of this test process (its env is already in os.environ)."""
+    assert _lease is not None, "textbook.pytest_plugin did not lease a domain"
+    return _lease
+
+
+@pytest.fixture(scope="session", autouse=True)
+def no_leftover_ros_processes():
+    """Fail the session when a test left a process running (it is killed first)."""
+    yield
+    if _lease is None:
+        return
+    leftovers = reaper.reap([_lease.token], grace=3.0)
+    if leftovers:
+        pytest.fail("processes started by the tests were still running at the end of the "
+                    "session (now killed):\n  " + "\n  ".join(leftovers), pytrace=False)
