@@ -18,13 +18,20 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
-#: Discovery is never trusted before this long (seconds): a graph that looks
-#: stable right after joining is usually just empty.
-MIN_WAIT = 0.6
+# How long discovery takes.  Measured with Fast DDS and
+# ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST: a new participant often hears from
+# the others within 0.2 s, but as often only at their next periodic
+# announcement, which comes every 3 s by default.  A graph that has looked
+# stable for a second can therefore still be missing whole launches, so
+# commands that list the whole graph wait one announcement period; commands
+# about one node or topic stop as soon as it has shown up.
+
+#: Minimum wait (seconds) before a listing of the whole graph is trusted.
+MIN_WAIT = 3.2
 #: The graph counts as settled when it has not changed for this long.
-QUIET_TIME = 0.4
-#: Upper bound for waiting on discovery.
-MAX_WAIT = 3.0
+QUIET_TIME = 0.3
+#: Upper bound for waiting on discovery (an absent node or topic costs this).
+MAX_WAIT = 4.0
 POLL = 0.05
 
 
@@ -77,6 +84,7 @@ def wait_for_graph(node: Node, until: Callable[[], bool] | None = None,
     Returns once at least `min_wait` has passed, `until()` (if given) holds and
     the graph has been unchanged for `quiet` seconds; or after `max_wait`.
     """
+    min_wait = min(min_wait, max_wait)
     start = time.monotonic()
     last = None
     last_change = start
@@ -116,9 +124,19 @@ def node_names(node: Node, include_hidden: bool = False) -> list[str]:
     return sorted(n for n in names if include_hidden or not is_hidden(n))
 
 
-def wait_for_node(node: Node, target: str, include_hidden: bool = False) -> bool:
-    """Settle discovery, giving the named node the whole time budget to appear."""
-    wait_for_graph(node, until=lambda: target in node_names(node, include_hidden=True))
+def wait_until(node: Node, condition: Callable[[], bool], max_wait: float = MAX_WAIT) -> None:
+    """Wait for one thing (a node, a publisher) to be discovered, then settle briefly.
+
+    Once a participant shows up, the rest of what it offers follows within a
+    fraction of a second: no need to wait for the whole graph.
+    """
+    wait_for_graph(node, until=condition, min_wait=QUIET_TIME, max_wait=max_wait)
+
+
+def wait_for_node(node: Node, target: str, include_hidden: bool = False,
+                  max_wait: float = MAX_WAIT) -> bool:
+    """Wait until the named node is discovered (or time runs out); True if it was."""
+    wait_until(node, lambda: target in node_names(node, include_hidden=True), max_wait)
     return target in node_names(node, include_hidden=include_hidden)
 
 

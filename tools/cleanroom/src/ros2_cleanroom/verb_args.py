@@ -51,6 +51,9 @@ def run(parser: argparse.ArgumentParser, argv: list[str]) -> int:
         return handler(args)
     except KeyboardInterrupt:
         return 0
+    except BrokenPipeError:  # e.g. `ros2 topic echo /x | head -n 3`
+        sys.stdout = None  # nothing more can be written; skip the flush at exit
+        return 0
 
 
 def fail(message: str) -> int:

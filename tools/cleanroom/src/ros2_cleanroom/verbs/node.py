@@ -49,7 +49,8 @@ def list_nodes(args: argparse.Namespace) -> int:
 def node_info(args: argparse.Namespace) -> int:
     target = args.node_name if args.node_name.startswith('/') else '/' + args.node_name
     with cli_node.cli_node() as node:
-        if not cli_node.wait_for_node(node, target, include_hidden=True):
+        if not cli_node.wait_for_node(node, target, include_hidden=True,
+                                      max_wait=_max_wait(args)):
             return fail(f"Unable to find node '{args.node_name}'")
         sections = node_sections(node, target, args.include_hidden)
     print(target)
