@@ -1,0 +1,24 @@
+"""Every lesson executes through nbclient, as the site build executes it
+(one test per lesson; the result also refreshes the build cache)."""
+from __future__ import annotations
+
+import pytest
+
+from textbook import execute
+from textbook.lessons import discover, load
+
+LESSONS = discover()
+
+
+def test_there_are_lessons():
+    assert LESSONS, "lessons/ has no lessons"
+
+
+@pytest.mark.timeout(900)
+@pytest.mark.parametrize("path", LESSONS, ids=lambda p: str(p.relative_to(p.parents[2])))
+def test_lesson_executes(path):
+    notebook = execute.refresh(load(path))
+    code_cells = [cell for cell in notebook.cells if cell.cell_type == "code"]
+    assert all(cell.get("execution_count") for cell in code_cells), "a code cell did not run"
+    errors = [out for cell in code_cells for out in cell.outputs if out.output_type == "error"]
+    assert not errors, errors

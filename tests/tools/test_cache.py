@@ -1,0 +1,80 @@
+"""The content cache: an unchanged lesson is not executed again; a change to
+the lesson, to a snippet it uses, or to the tools executes it again."""
+from __future__ import annotations
+
+import shutil
+
+import pytest
+from textbook import cache, execute, paths
+from textbook.lessons import load
+
+from ._lesson_files import code_cells, write_lesson
+
+
+@pytest.fixture
+def snippets(tmp_path):
+    root = tmp_path / "snippets"
+    for name in ("alpha_pkg", "beta_pkg"):
+        (root / name).mkdir(parents=True)
+        (root / name / "node.py").write_text(f"# {name}\n")
+    return root
+
+
+def key_of(path, snippets):
+    return cache.lesson_key(load(path), snippets)
+
+
+def test_key_is_stable_for_unchanged_content(tmp_path, snippets):
+    path = write_lesson(tmp_path, code_cells("print('alpha_pkg')"))
+    assert key_of(path, snippets) == key_of(path, snippets)
+
+
+def test_key_changes_with_the_lesson_text(tmp_path, snippets):
+    path = write_lesson(tmp_path, code_cells("print('alpha_pkg')"))
+    before = key_of(path, snippets)
+    path.write_text(path.read_text() + "\nOne more sentence.\n")
+    assert key_of(path, snippets) != before
+
+
+def test_key_follows_the_packages_a_lesson_uses_and_only_those(tmp_path, snippets):
+    path = write_lesson(tmp_path, code_cells("%%bash\nros2 run alpha_pkg node"))
+    before = key_of(path, snippets)
+    (snippets / "beta_pkg" / "node.py").write_text("# changed\n")
+    assert key_of(path, snippets) == before, "an unrelated package invalidated the lesson"
+    (snippets / "alpha_pkg" / "node.py").write_text("# changed\n")
+    assert key_of(path, snippets) != before
+
+
+def test_a_lesson_that_builds_the_workspace_depends_on_all_snippets(tmp_path, snippets):
+    path = write_lesson(tmp_path, code_cells("%%bash\ncolcon build"))
+    before = key_of(path, snippets)
+    (snippets / "beta_pkg" / "node.py").write_text("# changed\n")
+    assert key_of(path, snippets) != before
+
+
+def test_key_changes_with_the_tools(tmp_path, snippets, monkeypatch):
+    path = write_lesson(tmp_path, code_cells("print(1)"))
+    before = key_of(path, snippets)
+    monkeypatch.setattr(cache, "__version__", "99.0")
+    assert key_of(path, snippets) != before
+
+
+def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
+    monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")
+    path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
+    runs = []
+    real_execute = execute.execute
+    monkeypatch.setattr(execute, "execute", lambda lesson: runs.append(1) or real_execute(lesson))
+
+    first = execute.publish(load(path))
+    output = first.read_text()
+    execute.publish(load(path))
+    assert len(runs) == 1, "an unchanged lesson was executed again"
+    assert first.read_text() == output
+
+    path.write_text(path.read_text().replace("print(random", "print('changed', random"))
+    execute.publish(load(path))
+    assert len(runs) == 2, "a changed lesson was not executed again"
+    assert "changed" in first.read_text()
+    shutil.rmtree(tmp_path / "cache")

@@ -1,0 +1,60 @@
+"""Lesson execution: real outputs in an isolated domain, errors that name the
+lesson, the cell and the error, hang protection, and no leftover processes."""
+from __future__ import annotations
+
+import psutil
+import pytest
+from textbook import execute
+from textbook.lessons import load
+
+from ._lesson_files import code_cells, write_lesson
+
+
+def test_outputs_are_recorded_in_an_isolated_sourced_environment(tmp_path):
+    lesson = load(write_lesson(tmp_path, code_cells(
+        "import os\n"
+        "print(os.environ['ROS_DOMAIN_ID'], os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'])",
+        "%%bash\nros2 pkg prefix my_robot_pkg 2>/dev/null || echo $AMENT_PREFIX_PATH",
+        "%%bash\nls src/")))
+    notebook = execute.execute(lesson)
+    outputs = ["".join(o.get("text", "") for o in c.outputs) for c in notebook.cells
+               if c.cell_type == "code"]
+    domain, discovery = outputs[0].split()
+    assert 1 <= int(domain) <= 89 and discovery == "LOCALHOST"
+    assert "build/ws/install/my_robot_pkg" in outputs[1]
+    assert "my_robot_pkg" in outputs[2].split()  # the work folder's src/ is snippets/
+
+
+def test_failing_cell_names_lesson_line_cell_and_error(tmp_path):
+    path = write_lesson(tmp_path, code_cells("x = 1", "print('before')\n1 / 0"))
+    line = path.read_text().splitlines().index("print('before')") + 1
+    with pytest.raises(execute.LessonExecutionError) as error:
+        execute.execute(load(path))
+    message = str(error.value)
+    assert f"demo.md:{line}: cell 3 (\"print('before')\") failed" in message
+    assert "ZeroDivisionError: division by zero" in message
+    assert "| before" in message  # what the cell printed before failing
+
+
+def test_failing_shell_command_fails_the_lesson(tmp_path):
+    lesson = load(write_lesson(tmp_path, code_cells("%%bash\necho trying\nexit 3")))
+    with pytest.raises(execute.LessonExecutionError, match="CalledProcessError"):
+        execute.execute(lesson)
+
+
+def test_a_hung_cell_is_stopped_and_reported(tmp_path):
+    lesson = load(write_lesson(tmp_path, code_cells("import time\ntime.sleep(60)")))
+    with pytest.raises(execute.LessonExecutionError, match=r"no result after 3 s"):
+        execute.execute(lesson, timeout=3)
+
+
+def test_processes_left_running_are_killed_and_fail_the_lesson(tmp_path):
+    # In a session of its own, the process survives the kernel's process group.
+    lesson = load(write_lesson(tmp_path, code_cells(
+        "import subprocess\n"
+        "proc = subprocess.Popen(['sleep', '300'], start_new_session=True)")))
+    with pytest.raises(execute.LessonExecutionError, match="still running") as error:
+        execute.execute(lesson)
+    assert "sleep 300" in str(error.value)
+    pid = int(str(error.value).split("pid ")[1].split(":")[0])
+    assert not psutil.pid_exists(pid) or psutil.Process(pid).status() == psutil.STATUS_ZOMBIE

@@ -1,0 +1,57 @@
+"""Navigation from metadata, snippet title bars and folded solutions."""
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+from bs4 import BeautifulSoup
+from textbook.nav import build_nav
+from textbook.render import finish_lesson_html
+
+
+def fake_lesson(chapter, layer, name, title):
+    return SimpleNamespace(meta={"chapter": chapter, "layer": layer}, title=title,
+                           path=SimpleNamespace(name=name),
+                           site_path=f"ch{chapter:02d}/{layer}/{name[:-3]}.ipynb")
+
+
+def test_nav_is_chapter_then_layer_then_lesson():
+    nav = build_nav([
+        fake_lesson(7, "L1", "00_a.md", "Capstone A"),
+        fake_lesson(6, "L2", "00_b.md", "AI B"),
+        fake_lesson(6, "L1", "01_c.md", "Second"),
+        fake_lesson(6, "L1", "00_d.md", "First"),
+    ])
+    assert nav == [
+        {"Home": "index.md"},
+        {"Chapter 6 · Building Robot Systems": [
+            {"L1 · Manual Foundation": [{"First": "ch06/L1/00_d.ipynb"},
+                                        {"Second": "ch06/L1/01_c.ipynb"}]},
+            {"L2 · AI Collaboration": [{"AI B": "ch06/L2/00_b.ipynb"}]},
+        ]},
+        {"Chapter 7 · Capstone": [
+            {"L1 · Manual Foundation": [{"Capstone A": "ch07/L1/00_a.ipynb"}]},
+        ]},
+    ]
+
+
+def test_snippet_title_moves_into_the_code_block():
+    html = ('<div class="snippet-title">snippets/p/setup.py</div>\n'
+            '<div class="highlight"><pre>x = 1</pre></div>')
+    soup = BeautifulSoup(finish_lesson_html(html), "html.parser")
+    block = soup.select_one("div.highlight")
+    assert block.select_one("span.filename").text == "snippets/p/setup.py"
+    assert soup.select("div.snippet-title") == []
+
+
+def test_consecutive_solution_cells_fold_into_one_closed_details():
+    html = ('<div class="jp-Cell">task</div>'
+            '<div class="jp-Cell celltag_solution">answer 1</div>'
+            '<div class="jp-Cell celltag_solution">answer 2</div>'
+            '<div class="jp-Cell">next</div>'
+            '<div class="jp-Cell celltag_hint">a hint</div>')
+    soup = BeautifulSoup(finish_lesson_html(html), "html.parser")
+    folded = soup.select("details")
+    assert [d.summary.text for d in folded] == ["Solution", "Hint"]
+    assert not any(d.has_attr("open") for d in folded)
+    assert [c.text for c in folded[0].select("div.jp-Cell")] == ["answer 1", "answer 2"]
+    assert [c.text for c in soup.find_all("div", recursive=False)] == ["task", "next"]
