@@ -21,17 +21,17 @@ from rclpy.node import Node
 # How long discovery takes.  Measured with Fast DDS and
 # ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST: a new participant often hears from
 # the others within 0.2 s, but as often only at their next periodic
-# announcement, which comes every 3 s by default.  A graph that has looked
-# stable for a second can therefore still be missing whole launches, so
-# commands that list the whole graph wait one announcement period; commands
-# about one node or topic stop as soon as it has shown up.
+# announcement, which comes every 3 s by default (seen: up to 3.4 s).  A graph
+# that has looked stable for a second can therefore still be missing whole
+# launches, so commands that list the whole graph wait one announcement
+# period; commands about one node or topic stop as soon as it has shown up.
 
 #: Minimum wait (seconds) before a listing of the whole graph is trusted.
-MIN_WAIT = 3.2
+MIN_WAIT = 3.6
 #: The graph counts as settled when it has not changed for this long.
 QUIET_TIME = 0.3
 #: Upper bound for waiting on discovery (an absent node or topic costs this).
-MAX_WAIT = 4.0
+MAX_WAIT = 4.5
 POLL = 0.05
 
 

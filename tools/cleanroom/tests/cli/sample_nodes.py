@@ -71,6 +71,7 @@ def main() -> None:
     rclpy.init(args=sys.argv)
     signal.signal(signal.SIGTERM, lambda *_: rclpy.try_shutdown())
     node = KINDS[sys.argv[1]]()
+    print('ready', flush=True)  # the tests wait for this line before using the node
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):

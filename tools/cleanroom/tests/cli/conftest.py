@@ -1,0 +1,122 @@
+"""Fixtures of the `ros2 node|topic|param` tests.
+
+Each test module gets its own ROS domain (same lock-file allocator as
+../conftest.py, CONTRIBUTING.md), so the graph a module lists holds exactly
+the sample nodes it started, even if an earlier module's nodes are still
+being forgotten by discovery.  Every process started here runs in its own
+session and is stopped (SIGINT, then SIGKILL) when the module ends.
+"""
+from __future__ import annotations
+
+import fcntl
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+from collections.abc import Callable, Iterator
+from pathlib import Path
+
+import psutil
+import pytest
+
+ROS2 = str(Path(sys.executable).parent / 'ros2')
+SAMPLE_NODES = str(Path(__file__).with_name('sample_nodes.py'))
+
+
+def lease_domain() -> tuple[int, int]:
+    """Lock a free domain ID 1-89 for this module; returns (id, fd holding the lock)."""
+    lock_dir = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
+    lock_dir.mkdir(parents=True, exist_ok=True)
+    for domain_id in range(1, 90):
+        fd = os.open(lock_dir / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        os.ftruncate(fd, 0)
+        os.write(fd, f'{os.getpid()}\n'.encode())
+        return domain_id, fd
+    raise RuntimeError('no free ROS domain ID in 1-89')
+
+
+@pytest.fixture(scope='module')
+def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
+    """Environment for the commands and nodes of one test module: a private domain."""
+    domain_id, fd = lease_domain()
+    env = {k: v for k, v in os.environ.items()
+           if k not in ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS')}
+    env.update(ROS_DOMAIN_ID=str(domain_id), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
+               PYTHONUNBUFFERED='1', RCUTILS_COLORIZED_OUTPUT='0',
+               ROS_LOG_DIR=str(tmp_path_factory.mktemp('ros_log')))
+    try:
+        yield env
+    finally:
+        os.close(fd)
+
+
+def stop_process(proc: subprocess.Popen, grace: float = 5.0) -> None:
+    """SIGINT the process group, then SIGKILL whatever is left; always reap."""
+    for sig, wait in ((signal.SIGINT, grace), (signal.SIGKILL, grace)):
+        if proc.poll() is not None:
+            break
+        try:
+            os.killpg(proc.pid, sig)
+        except ProcessLookupError:
+            break
+        try:
+            proc.wait(timeout=wait)
+        except subprocess.TimeoutExpired:
+            continue
+    proc.wait()
+
+
+@pytest.fixture(scope='module')
+def start_node(cli_env: dict[str, str]) -> Iterator[Callable[..., subprocess.Popen]]:
+    """`start_node('talker', '--ros-args', ...)`: a sample node, up when this returns."""
+    started: list[subprocess.Popen] = []
+
+    def start(kind: str, *ros_args: str) -> subprocess.Popen:
+        proc = subprocess.Popen([sys.executable, SAMPLE_NODES, kind, *ros_args], env=cli_env,
+                                stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
+                                start_new_session=True)
+        started.append(proc)
+        assert proc.stdout.readline().strip() == 'ready', f'sample node {kind} did not start'
+        return proc
+
+    try:
+        yield start
+    finally:
+        for proc in started:
+            stop_process(proc)
+        for proc in started:
+            assert not psutil.pid_exists(proc.pid) or \
+                psutil.Process(proc.pid).status() == psutil.STATUS_ZOMBIE
+
+
+@pytest.fixture(scope='module')
+def ros2(cli_env: dict[str, str]) -> Callable[..., subprocess.CompletedProcess]:
+    """Run `ros2 ARGS...` in the module's domain and return its result (text)."""
+    def run(*args: str, timeout: float = 30.0) -> subprocess.CompletedProcess:
+        return subprocess.run([ROS2, *args], env=cli_env, capture_output=True, text=True,
+                              timeout=timeout)
+    return run
+
+
+@pytest.fixture
+def ros2_background(cli_env: dict[str, str]) -> Iterator[Callable[..., subprocess.Popen]]:
+    """Start `ros2 ARGS...` streaming (echo, hz) in its own session; stopped after the test."""
+    started: list[subprocess.Popen] = []
+
+    def start(*args: str) -> subprocess.Popen:
+        proc = subprocess.Popen([ROS2, *args], env=cli_env, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True, start_new_session=True)
+        started.append(proc)
+        return proc
+
+    try:
+        yield start
+    finally:
+        for proc in started:
+            stop_process(proc)

@@ -1,0 +1,73 @@
+"""`ros2 node list|info` against running nodes, in Jazzy's formats."""
+from __future__ import annotations
+
+import pytest
+
+SENSOR_PUBLISHER_INFO = """\
+/sensor_publisher
+  Subscribers:
+
+  Publishers:
+    /chatter: std_msgs/msg/String
+    /parameter_events: rcl_interfaces/msg/ParameterEvent
+    /rosout: rcl_interfaces/msg/Log
+  Service Servers:
+    /sensor_publisher/describe_parameters: rcl_interfaces/srv/DescribeParameters
+    /sensor_publisher/get_parameter_types: rcl_interfaces/srv/GetParameterTypes
+    /sensor_publisher/get_parameters: rcl_interfaces/srv/GetParameters
+    /sensor_publisher/get_type_description: type_description_interfaces/srv/GetTypeDescription
+    /sensor_publisher/list_parameters: rcl_interfaces/srv/ListParameters
+    /sensor_publisher/set_parameters: rcl_interfaces/srv/SetParameters
+    /sensor_publisher/set_parameters_atomically: rcl_interfaces/srv/SetParametersAtomically
+  Service Clients:
+
+  Action Servers:
+
+  Action Clients:
+
+"""
+
+
+@pytest.fixture(scope='module', autouse=True)
+def nodes(start_node):
+    start_node('talker')
+    start_node('listener')
+
+
+def test_list_shows_visible_nodes_sorted(ros2):
+    result = ros2('node', 'list')
+    assert (result.returncode, result.stdout) == (0, '/listener\n/sensor_publisher\n')
+
+
+def test_list_all_includes_the_hidden_command_node(ros2):
+    lines = ros2('node', 'list', '-a').stdout.splitlines()
+    assert lines[-2:] == ['/listener', '/sensor_publisher']
+    assert any(line.startswith('/_ros2cli_') for line in lines)
+
+
+def test_list_count(ros2):
+    assert ros2('node', 'list', '--count-nodes').stdout == '2\n'
+
+
+def test_info_matches_jazzy_layout(ros2):
+    result = ros2('node', 'info', '/sensor_publisher')
+    assert (result.returncode, result.stdout, result.stderr) == (0, SENSOR_PUBLISHER_INFO, '')
+
+
+def test_info_lists_subscriptions(ros2):
+    out = ros2('node', 'info', 'listener').stdout
+    assert '  Subscribers:\n    /chatter: std_msgs/msg/String\n' \
+           '    /cmd_vel: geometry_msgs/msg/Twist\n  Publishers:\n' in out
+
+
+def test_info_of_unknown_node_fails(ros2):
+    result = ros2('node', 'info', '/nope')
+    assert (result.returncode, result.stdout) == (1, '')
+    assert result.stderr == "Unable to find node '/nope'\n"
+
+
+@pytest.mark.parametrize('args', [['bogus'], ['info'], ['list', '--bogus']])
+def test_bad_arguments_are_usage_errors(ros2, args):
+    result = ros2('node', *args)
+    assert result.returncode == 2
+    assert result.stderr.startswith('usage: ros2 node')
