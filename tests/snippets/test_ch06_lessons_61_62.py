@@ -1,0 +1,226 @@
+"""Launch files of lessons 6.1 and 6.2 and their exercise solutions start the
+nodes they promise, with the parameters they promise; the launch files that
+show a mistake fail with the error the lesson explains.
+
+Every launch file is started the way a student starts it (``ros2 launch PKG
+FILE``) and stopped the way a student stops it (Ctrl+C: SIGINT to the
+foreground process group).  The nodes and their parameters are read from
+the ROS graph with rclpy, as ``ros2 node list`` / ``ros2 param get`` would.
+"""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import Any
+
+import pytest
+import rclpy
+from rcl_interfaces.srv import GetParameters
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node as RclpyNode
+from rclpy.parameter import parameter_value_to_python
+from textbook import paths
+from textbook.myst import fences
+
+LESSONS = [paths.LESSONS / "ch06/L1/01_anatomy_of_a_launch_file.md",
+           paths.LESSONS / "ch06/L1/02_parameters_in_launch_files.md"]
+HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
+
+
+@dataclass(frozen=True)
+class Case:
+    """One launch: what to type, and what must be running afterwards."""
+
+    package: str
+    launch_file: str
+    arguments: tuple[str, ...] = ()
+    # node (full name) -> {parameter: expected value}; {} only checks the node is up
+    nodes: dict[str, dict[str, Any]] = field(default_factory=dict)
+
+    @property
+    def id(self) -> str:
+        return " ".join((self.launch_file, *self.arguments))
+
+
+ROBOT_PARAMS_YAML = {"robot_name": "scout", "update_rate": 20.0, "max_linear_speed": 0.8,
+                     "max_angular_speed": 1.5, "enabled_sensors": ["lidar"],
+                     "sensors.lidar.topic": "front_scan", "sensors.lidar.range_max": 8.0,
+                     "sensors.camera.enabled": False}
+TURTLE = {"robot_name": "turtle", "update_rate": 5.0, "max_linear_speed": 0.2,
+          "enabled_sensors": ["camera"], "sensors.lidar.enabled": False,
+          "sensors.camera.enabled": True, "sensors.camera.topic": "front_camera"}
+
+RUNNING = [
+    # lesson 6.1
+    Case("my_robot_pkg", "robot_system.launch.py",
+         nodes={"/sensor_publisher": {"publish_rate": 2.0},
+                "/data_processor": {"window_size": 3}}),
+    # lesson 6.2
+    Case("my_robot_pkg", "controller_params.launch.py",
+         nodes={"/sensor_publisher": {"publish_rate": 4.0},
+                "/data_processor": {"window_size": 5},
+                "/robot_controller": {"robot_name": "rover", "update_rate": 5.0,
+                                      "max_linear_speed": 0.3, "enabled_sensors": ["lidar"],
+                                      "sensors.camera.enabled": True}}),
+    Case("my_robot_pkg", "controller_yaml.launch.py",
+         nodes={"/robot_controller": ROBOT_PARAMS_YAML}),
+    Case("my_robot_pkg", "layered_params.launch.py",
+         nodes={"/sensor_publisher": {"publish_rate": 1.0},
+                "/robot_controller": {**ROBOT_PARAMS_YAML, "max_linear_speed": 0.2,
+                                      "robot_name": "scout_2"}}),
+    Case("my_robot_pkg", "mistake_robot_name_arg.launch.py", ("robot_name:=rover",),
+         nodes={"/robot_controller": {"robot_name": "rover"}}),
+    Case("my_robot_pkg", "robot_name_arg.launch.py", ("robot_name:=042",),
+         nodes={"/robot_controller": {"robot_name": "042"}}),
+    # exercise solutions
+    Case("ch06_solutions", "ex61_full_pipeline.launch.py",
+         nodes={"/sensor_publisher": {}, "/data_processor": {}, "/robot_controller": {}}),
+    Case("ch06_solutions", "ex61_front_sensor.launch.py",
+         nodes={"/front_sensor": {"publish_rate": 2.0}, "/data_processor": {}}),
+    Case("ch06_solutions", "ex62_turtle.launch.py", nodes={"/robot_controller": TURTLE}),
+    Case("ch06_solutions", "ex62_turtle_demo.launch.py",
+         nodes={"/robot_controller": {**TURTLE, "max_linear_speed": 0.35}}),
+]
+
+# (case, text the launch output must contain): the node refuses its parameter and dies.
+FAILING = [
+    (Case("my_robot_pkg", "mistake_integer_rate.launch.py"),
+     "rclpy.exceptions.InvalidParameterTypeException: Trying to set parameter 'update_rate' "
+     "to '2' of type 'INTEGER', expecting type 'DOUBLE': update_rate"),
+    (Case("my_robot_pkg", "mistake_robot_name_arg.launch.py", ("robot_name:=042",)),
+     "rclpy.exceptions.InvalidParameterTypeException: Trying to set parameter 'robot_name' "
+     "to '34' of type 'INTEGER', expecting type 'STRING': robot_name"),
+]
+
+
+@pytest.fixture
+def graph():
+    """An rclpy node in this test's ROS domain, to look at the graph."""
+    context = Context()
+    rclpy.init(context=context)
+    node = rclpy.create_node("ch06_test_observer", context=context)
+    yield node
+    node.destroy_node()
+    rclpy.shutdown(context=context)
+
+
+def _command(case: Case) -> list[str]:
+    return ["ros2", "launch", case.package, case.launch_file, *case.arguments]
+
+
+def _stop(proc: subprocess.Popen) -> str:
+    """Ctrl+C as a terminal sends it (to the whole process group); returns the output."""
+    if proc.poll() is None:
+        os.killpg(proc.pid, signal.SIGINT)
+    try:
+        out, _ = proc.communicate(timeout=HANG_GUARD)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, _ = proc.communicate()
+        pytest.fail(f"launch did not stop on Ctrl+C:\n{out}")
+    return out
+
+
+@contextmanager
+def launched(case: Case, ros_env: dict[str, str]):
+    """``ros2 launch ...`` running in its own process group; yields the Popen."""
+    proc = subprocess.Popen(_command(case), env=ros_env, cwd=paths.WORKSPACE,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            start_new_session=True)
+    try:
+        yield proc
+    finally:
+        proc.output = _stop(proc)
+
+
+def _wait_for_nodes(graph: RclpyNode, names: set[str], proc: subprocess.Popen) -> set[str]:
+    """Full names of the nodes in ``names`` that appeared before the launch ended."""
+    deadline = time.monotonic() + HANG_GUARD
+    seen: set[str] = set()
+    while time.monotonic() < deadline and proc.poll() is None:
+        seen = {f"{ns.rstrip('/')}/{name}" for name, ns in graph.get_node_names_and_namespaces()}
+        if names <= seen:
+            break
+        time.sleep(0.2)
+    return names & seen
+
+
+def _get_parameters(graph: RclpyNode, node: str, names: list[str]) -> dict[str, Any]:
+    """What ``ros2 param get NODE NAME`` asks: the node's get_parameters service."""
+    client = graph.create_client(GetParameters, f"{node}/get_parameters")
+    try:
+        assert client.wait_for_service(timeout_sec=HANG_GUARD), f"{node}: no parameter service"
+        future = client.call_async(GetParameters.Request(names=names))
+        executor = SingleThreadedExecutor(context=graph.context)
+        executor.add_node(graph)
+        executor.spin_until_future_complete(future, timeout_sec=HANG_GUARD)
+        executor.remove_node(graph)
+        executor.shutdown()
+        assert future.done(), f"{node}: get_parameters got no answer"
+        values = [parameter_value_to_python(v) for v in future.result().values]
+        return dict(zip(names, values, strict=True))
+    finally:
+        graph.destroy_client(client)
+
+
+def _normalized(value: Any) -> Any:
+    return list(value) if isinstance(value, (list, tuple)) or hasattr(value, "tolist") else value
+
+
+@pytest.mark.parametrize("case", RUNNING, ids=lambda case: case.id)
+def test_launch_starts_nodes_with_their_parameters(case: Case, ros_env, graph):
+    with launched(case, ros_env) as proc:
+        up = _wait_for_nodes(graph, set(case.nodes), proc)
+        got = {node: _get_parameters(graph, node, list(expected)) if expected else {}
+               for node, expected in case.nodes.items() if node in up}
+    assert up == set(case.nodes), f"nodes missing: {set(case.nodes) - up}\n{proc.output}"
+    got = {node: {k: _normalized(v) for k, v in params.items()} for node, params in got.items()}
+    assert got == case.nodes, proc.output
+    assert "process has died" not in proc.output.split("user interrupted")[0], proc.output
+
+
+@pytest.mark.parametrize("case,error", FAILING, ids=lambda v: v.id if isinstance(v, Case) else "")
+def test_mistake_makes_the_node_die_and_launch_reports_it(case: Case, error: str, ros_env):
+    proc = subprocess.Popen(_command(case), env=ros_env, cwd=paths.WORKSPACE,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            start_new_session=True)
+    try:
+        # The only node dies, so launch has nothing left to run and ends by itself.
+        out, _ = proc.communicate(timeout=HANG_GUARD)
+    except subprocess.TimeoutExpired:
+        out = _stop(proc)
+        pytest.fail(f"launch kept running after the mistake:\n{out}")
+    assert f"[robot_controller-1] {error}" in out, out
+    assert "[ERROR] [robot_controller-1]: process has died [pid " in out, out
+    assert ", exit code 1, cmd '" in out, out
+
+
+def _launch_files_included_by(lesson) -> set[tuple[str, str]]:
+    found = set()
+    for fence in fences(lesson.read_text()):
+        target = fence.argument.partition("#")[0]
+        if fence.directive == "snippet" and target.endswith(".launch.py"):
+            package, _, name = target.partition("/launch/")
+            found.add((package, name))
+    return found
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=lambda p: p.name)
+def test_every_launch_file_a_lesson_shows_is_tested(lesson):
+    tested = {(case.package, case.launch_file) for case in RUNNING}
+    tested |= {(case.package, case.launch_file) for case, _ in FAILING}
+    shown = _launch_files_included_by(lesson)
+    assert shown, f"{lesson.name} shows no launch file"
+    assert shown <= tested, f"launch files shown but not tested: {sorted(shown - tested)}"
+
+
+def test_every_solution_launch_file_of_61_62_is_tested():
+    folder = paths.SNIPPETS / "ch06_solutions" / "launch"
+    solutions = {p.name for p in folder.glob("ex6[12]_*.launch.py")}
+    tested = {case.launch_file for case in RUNNING if case.package == "ch06_solutions"}
+    assert solutions and solutions <= tested, sorted(solutions - tested)
