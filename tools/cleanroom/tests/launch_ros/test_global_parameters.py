@@ -47,7 +47,7 @@ def test_unscoped_group_leaks_globals(test_package, run_launch):
         GroupAction([SetRemap(src='a', dst='b'), SetUseSimTime(True)], scoped=False),
         Node(package=PKG, executable='noop', name='after'),
     ])
-    assert record.node_cmd('after')[3:] == ['-p', 'use_sim_time:=True', '-r', 'a:=b']
+    assert record.node_cmd('after')[4:] == ['-p', 'use_sim_time:=True', '-r', 'a:=b']
 
 
 def test_set_use_sim_time_types_substitutions(test_package, run_launch):

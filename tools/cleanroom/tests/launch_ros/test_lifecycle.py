@@ -68,7 +68,7 @@ def test_change_state_events_drive_node_to_active(test_package, run_launch):
             entities=[probe_then_shutdown('/lr/lc_talker/get_state', states)])),
         EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
                                     transition_id=T.TRANSITION_CONFIGURE)),
-        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     assert record.returncode == 0
     assert states == ['active']
@@ -90,26 +90,28 @@ def test_lifecycle_transition_action_walks_the_chain(test_package, run_launch):
         RegisterEventHandler(OnStateTransition(
             matcher=lambda e: isinstance(e, StateTransition) and e.goal_state == 'active',
             entities=[probe_then_shutdown('/walker/get_state', states)])),
-        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     assert states == ['active']
 
 
 def test_refused_transition_is_logged(test_package, run_launch, capfd):
     node = LifecycleNode(package=PKG, executable='lifecycle_talker', name='refuser',
-                         namespace='lr')
+                         namespace='lr', arguments=['fail_configure'])
     states = []
     run_launch([
         node,
         EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_node_name('/lr/refuser'),
-                                    transition_id=T.TRANSITION_ACTIVATE)),
-        TimerAction(period=2.0, actions=[
-            probe_then_shutdown('/lr/refuser/get_state', states)]),
-        TimerAction(period=30.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+                                    transition_id=T.TRANSITION_CONFIGURE)),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=node, start_state='configuring', goal_state='unconfigured',
+            entities=[TimerAction(period=0.3, actions=[
+                probe_then_shutdown('/lr/refuser/get_state', states)])])),
+        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     out = capfd.readouterr()
     assert states == ['unconfigured']
-    assert ("Failed to make transition 'TRANSITION_ACTIVATE' for LifecycleNode '/lr/refuser'"
+    assert ("Failed to make transition 'TRANSITION_CONFIGURE' for LifecycleNode '/lr/refuser'"
             in out.out + out.err)
 
 

@@ -8,13 +8,17 @@ def noop():
 
 
 def lifecycle_talker():
-    """A managed node that does nothing but follow its state machine."""
+    """A managed node that follows its state machine; `fail_configure` makes it refuse."""
     import rclpy
     from rclpy.executors import ExternalShutdownException
     from rclpy.lifecycle import LifecycleNode, TransitionCallbackReturn
 
+    refuse = 'fail_configure' in rclpy.utilities.remove_ros_args(sys.argv)
+
     class Talker(LifecycleNode):
         def on_configure(self, state):
+            if refuse:
+                return TransitionCallbackReturn.FAILURE
             self.get_logger().info('configured')
             return TransitionCallbackReturn.SUCCESS
 
