@@ -56,53 +56,71 @@ def _processes_with_token(token: str) -> list[psutil.Process]:
     return found
 
 
-@pytest.fixture(scope='session', autouse=True)
-def ros_isolation() -> Iterator[int]:
-    """Put this session (and every process it starts) in a private ROS domain.
+class DomainLease:
+    """One locked ROS domain ID and the token marking the processes started under it."""
 
-    A token in the environment marks the processes we start, so the end of
-    the session can check that none of them is still alive.
-    """
-    domain_id, fd = _lease_domain()
-    saved = {k: os.environ.get(k) for k in ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE',
-                                           'ROS_LOCALHOST_ONLY', TOKEN_VAR)}
-    token = uuid.uuid4().hex
-    os.environ.update({'ROS_DOMAIN_ID': str(domain_id),
-                       'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST', TOKEN_VAR: token})
-    os.environ.pop('ROS_LOCALHOST_ONLY', None)
-    try:
-        yield domain_id
-    finally:
-        leftovers = _processes_with_token(token)
-        for proc in leftovers:
-            proc.kill()
-        for key, value in saved.items():
-            if value is None:
-                os.environ.pop(key, None)
-            else:
-                os.environ[key] = value
-        os.close(fd)
-        assert not leftovers, f'processes left behind by the tests: {leftovers}'
+    def __init__(self) -> None:
+        self.domain_id, self._fd = _lease_domain()
+        self.token = uuid.uuid4().hex
+
+    def env(self) -> dict[str, str]:
+        return {'ROS_DOMAIN_ID': str(self.domain_id),
+                'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST', TOKEN_VAR: self.token}
+
+    def release(self) -> None:
+        os.close(self._fd)
 
 
 @pytest.fixture(scope='session')
-def test_package(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """Build fixture_pkg/lr_test_pkg with colcon; return its install prefix.
+def domain_lease() -> Iterator[DomainLease]:
+    """A private ROS domain for these tests; at the end, no process may carry its token."""
+    lease = DomainLease()
+    try:
+        yield lease
+    finally:
+        leftovers = _processes_with_token(lease.token)
+        for proc in leftovers:
+            proc.kill()
+        lease.release()
+        assert not leftovers, f'processes left behind by the launch_ros tests: {leftovers}'
 
-    The prefix is put on AMENT_PREFIX_PATH (for the ament index) and its
-    site-packages on PYTHONPATH (for the console scripts), as setup.bash would.
+
+@pytest.fixture(autouse=True)
+def ros_isolation(domain_lease: DomainLease, monkeypatch: pytest.MonkeyPatch) -> int:
+    """Put each test (and every process it starts) in the private domain.
+
+    Set per test with monkeypatch so that tests outside this folder, run in
+    the same session, see the environment they expect.
     """
+    for key, value in domain_lease.env().items():
+        monkeypatch.setenv(key, value)
+    monkeypatch.delenv('ROS_LOCALHOST_ONLY', raising=False)
+    return domain_lease.domain_id
+
+
+@pytest.fixture(scope='session')
+def built_package(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Build fixture_pkg/lr_test_pkg with colcon once; return its install prefix."""
     ws = tmp_path_factory.mktemp('ws')
     shutil.copytree(HERE / 'fixture_pkg', ws / 'src')
     colcon = shutil.which('colcon', path=os.path.dirname(sys.executable)) or 'colcon'
     subprocess.run([colcon, 'build'], cwd=ws, check=True, stdout=subprocess.DEVNULL,
                    stderr=subprocess.STDOUT, timeout=120)
-    prefix = ws / 'install' / 'lr_test_pkg'
-    site = next(prefix.glob('lib/python3*/site-packages'))
-    for var, value in (('AMENT_PREFIX_PATH', prefix), ('PYTHONPATH', site)):
+    return ws / 'install' / 'lr_test_pkg'
+
+
+@pytest.fixture
+def test_package(built_package: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """The built package, made findable as `source install/setup.bash` would.
+
+    Its prefix goes on AMENT_PREFIX_PATH (ament index) and its site-packages
+    on PYTHONPATH (console scripts).
+    """
+    site = next(built_package.glob('lib/python3*/site-packages'))
+    for var, value in (('AMENT_PREFIX_PATH', built_package), ('PYTHONPATH', site)):
         old = os.environ.get(var)
-        os.environ[var] = str(value) + (os.pathsep + old if old else '')
-    return prefix
+        monkeypatch.setenv(var, str(value) + (os.pathsep + old if old else ''))
+    return built_package
 
 
 class LaunchRecord:
