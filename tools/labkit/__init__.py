@@ -1,0 +1,37 @@
+"""labkit: run ROS 2 launches from a notebook and look at what they start.
+
+The lessons of this book use a handful of calls::
+
+    import labkit
+
+    with labkit.launch('my_robot_pkg', 'robot_system.launch.py', robot_name='my_bot') as run:
+        print(run.command)  # ros2 launch my_robot_pkg robot_system.launch.py robot_name:=my_bot
+        run.wait_for_nodes(['/sensor_publisher', '/data_processor'])
+        snapshot = labkit.graph()     # nodes, topics, who publishes / subscribes
+        print(snapshot)
+        snapshot.parameters('/sensor_publisher')   # {'publish_rate': 2.0, ...}
+        labkit.draw_graph(snapshot)   # the rqt_graph picture, as a matplotlib Figure
+        print(run.output())           # what the launch printed so far
+    # leaving the block stops the launch: Ctrl-C, as in a terminal
+
+`labkit.launch()` and `labkit.run()` (for `ros2 run`) also work without
+`with`: keep the returned object and call `.stop()` when done.  Whatever
+is still running when the kernel exits is stopped, and a small watchdog
+process stops it even if the kernel crashes or is killed.
+
+labkit uses only rclpy and the `ros2` command, so it works the same with a
+real ROS 2 install and with this project's clean-room one.  It inherits the
+ROS isolation (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE) of the notebook,
+which the book's build sets for every lesson.
+"""
+from labkit.background import Background
+from labkit.commands import launch, run, start, start_launch
+from labkit.drawing import draw_graph
+from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
+from labkit.graph import GraphSnapshot, Topic, graph, read_parameters
+
+__all__ = [
+    'Background', 'GraphSnapshot', 'LabkitError', 'NodesNotFoundError', 'ProcessExitedError',
+    'Topic', 'draw_graph', 'graph', 'launch', 'read_parameters', 'run', 'start',
+    'start_launch',
+]

@@ -1,0 +1,176 @@
+"""`labkit.graph()`: a snapshot of the running ROS graph, read with rclpy only.
+
+What rqt_graph shows, as data a lesson can print or assert on: nodes,
+topics with their types, who publishes and who subscribes.  Hidden nodes
+(labkit's own, ros2cli's) and the topics every node has (/rosout,
+/parameter_events) are left out by default, like rqt_graph's "Hide" options.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from rcl_interfaces.msg import ParameterType, ParameterValue
+from rcl_interfaces.srv import GetParameters, ListParameters
+
+from labkit import observer
+from labkit.errors import LabkitError
+
+#: Topics every node publishes or subscribes to; noise in a picture of a system.
+DEFAULT_TOPICS = ('/rosout', '/parameter_events')
+
+
+@dataclass(frozen=True)
+class Topic:
+    """One topic: its name, message type(s) and the nodes on each side."""
+
+    name: str
+    types: tuple[str, ...]
+    publishers: tuple[str, ...]
+    subscribers: tuple[str, ...]
+
+    @property
+    def type(self) -> str:
+        """The message type (types joined with ', ' in the rare mixed case)."""
+        return ', '.join(self.types)
+
+
+@dataclass(frozen=True)
+class GraphSnapshot:
+    """The ROS graph at one moment.
+
+    Attributes:
+        nodes: full node names, sorted.
+        topics: topic name -> :class:`Topic`, sorted by name.
+        services: service name -> service types (hidden services left out).
+    """
+
+    nodes: tuple[str, ...]
+    topics: dict[str, Topic]
+    services: dict[str, tuple[str, ...]] = field(default_factory=dict)
+
+    def publishers(self, topic: str) -> tuple[str, ...]:
+        """Nodes publishing on `topic`."""
+        return self.topics[topic].publishers
+
+    def subscribers(self, topic: str) -> tuple[str, ...]:
+        """Nodes subscribed to `topic`."""
+        return self.topics[topic].subscribers
+
+    def edges(self) -> list[tuple[str, str]]:
+        """(from, to) pairs, node -> topic -> node, as rqt_graph draws them."""
+        pairs = []
+        for topic in self.topics.values():
+            pairs += [(node, topic.name) for node in topic.publishers]
+            pairs += [(topic.name, node) for node in topic.subscribers]
+        return pairs
+
+    def parameters(self, node: str) -> dict[str, Any]:
+        """The parameters of a running node, name -> value, read from its services."""
+        return read_parameters(node)
+
+    def draw(self, **options: Any) -> Any:
+        """The graph as a matplotlib Figure (see :func:`labkit.draw_graph`)."""
+        from labkit.drawing import draw_graph
+        return draw_graph(self, **options)
+
+    def __str__(self) -> str:
+        lines = [f'{len(self.nodes)} nodes: {", ".join(self.nodes) or "none"}']
+        for topic in self.topics.values():
+            lines.append(f'{topic.name} [{topic.type}]')
+            lines.append(f'    published by: {", ".join(topic.publishers) or "nobody"}')
+            lines.append(f'    subscribed by: {", ".join(topic.subscribers) or "nobody"}')
+        return '\n'.join(lines)
+
+    def _repr_pretty_(self, printer: Any, cycle: bool) -> None:  # IPython display
+        printer.text(str(self))
+
+
+def graph(include_hidden: bool = False, include_default_topics: bool = False) -> GraphSnapshot:
+    """Look at the ROS graph now and return what is in it.
+
+    The first call in a kernel takes a few seconds (discovery has to find
+    everything); later calls are quick.
+    """
+    observer.settle()
+    node = observer.observer().node
+    names = [(name, namespace, observer.full_name(name, namespace))
+             for name, namespace in node.get_node_names_and_namespaces()]
+    visible = sorted({full for _, _, full in names
+                      if include_hidden or not observer.is_hidden(full)})
+    publishers: dict[str, set[str]] = {}
+    subscribers: dict[str, set[str]] = {}
+    for name, namespace, full in names:
+        if full not in visible:
+            continue
+        for topic, _ in _safe(node.get_publisher_names_and_types_by_node, name, namespace):
+            publishers.setdefault(topic, set()).add(full)
+        for topic, _ in _safe(node.get_subscriber_names_and_types_by_node, name, namespace):
+            subscribers.setdefault(topic, set()).add(full)
+    topics = {}
+    for topic, types in sorted(node.get_topic_names_and_types()):
+        if not include_hidden and observer.is_hidden(topic):
+            continue
+        if not include_default_topics and topic in DEFAULT_TOPICS:
+            continue
+        pubs, subs = publishers.get(topic, set()), subscribers.get(topic, set())
+        if not pubs and not subs:
+            continue  # only hidden nodes use it
+        topics[topic] = Topic(topic, tuple(types), tuple(sorted(pubs)), tuple(sorted(subs)))
+    services = {service: tuple(types)
+                for service, types in sorted(node.get_service_names_and_types())
+                if include_hidden or not observer.is_hidden(service)}
+    return GraphSnapshot(tuple(visible), topics, services)
+
+
+def _safe(query: Any, name: str, namespace: str) -> list[tuple[str, list[str]]]:
+    try:
+        return query(name, namespace)
+    except Exception:  # the node left between listing and asking
+        return []
+
+
+def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
+    """Parameters of `node` (e.g. '/robot_controller'), sorted by name.
+
+    Raises LabkitError when the node does not answer its parameter services.
+    """
+    target = node if node.startswith('/') else '/' + node
+    obs = observer.observer()
+    listing = obs.call(ListParameters, f'{target}/list_parameters',
+                       ListParameters.Request(depth=0), timeout)
+    if listing is None:
+        raise LabkitError(f'{target} did not answer on {target}/list_parameters: '
+                          'is the node running (see labkit.graph().nodes)?')
+    names = sorted(listing.result.names)
+    values = obs.call(GetParameters, f'{target}/get_parameters',
+                      GetParameters.Request(names=names), timeout)
+    if values is None:
+        raise LabkitError(f'{target} did not answer on {target}/get_parameters')
+    return {name: parameter_value(value) for name, value in zip(names, values.values,
+                                                                 strict=True)}
+
+
+_SCALAR_FIELDS = {
+    ParameterType.PARAMETER_BOOL: 'bool_value',
+    ParameterType.PARAMETER_INTEGER: 'integer_value',
+    ParameterType.PARAMETER_DOUBLE: 'double_value',
+    ParameterType.PARAMETER_STRING: 'string_value',
+}
+_ARRAY_FIELDS = {
+    ParameterType.PARAMETER_BYTE_ARRAY: 'byte_array_value',
+    ParameterType.PARAMETER_BOOL_ARRAY: 'bool_array_value',
+    ParameterType.PARAMETER_INTEGER_ARRAY: 'integer_array_value',
+    ParameterType.PARAMETER_DOUBLE_ARRAY: 'double_array_value',
+    ParameterType.PARAMETER_STRING_ARRAY: 'string_array_value',
+}
+
+
+def parameter_value(value: ParameterValue) -> Any:
+    """rcl_interfaces ParameterValue -> plain Python (arrays as lists, unset as None)."""
+    if value.type in _SCALAR_FIELDS:
+        return getattr(value, _SCALAR_FIELDS[value.type])
+    if value.type in _ARRAY_FIELDS:
+        return [item.item() if hasattr(item, 'item') else item
+                for item in getattr(value, _ARRAY_FIELDS[value.type])]
+    return None

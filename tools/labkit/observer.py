@@ -1,0 +1,131 @@
+"""One hidden rclpy node per notebook kernel that watches the ROS graph.
+
+Discovery takes seconds for a newcomer (Fast DDS answers a new participant
+at its next announcement, every 3 s by default), so labkit keeps a single
+node alive for the whole kernel instead of joining the graph for every
+question: after the first look, the graph it sees is always current.
+
+The node lives in its own rclpy Context with no signal handlers, so it
+neither disturbs a student's own `rclpy.init()` in the same kernel nor
+steals the notebook's Ctrl-C / interrupt.
+"""
+from __future__ import annotations
+
+import atexit
+import os
+import threading
+import time
+from typing import Any
+
+import rclpy
+from rclpy.context import Context
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+from rclpy.signals import SignalHandlerOptions
+
+#: How long a brand-new observer waits before trusting that it has seen the
+#: whole graph: one Fast DDS announcement period and a margin.
+FIRST_LOOK_WAIT = 3.6
+#: Later looks only wait until the graph has been unchanged for this long.
+QUIET_TIME = 0.3
+
+_lock = threading.RLock()
+_observer: Observer | None = None
+
+
+class Observer:
+    """The hidden node and its private context."""
+
+    def __init__(self) -> None:
+        self.context = Context()
+        rclpy.init(args=[], context=self.context,
+                   signal_handler_options=SignalHandlerOptions.NO)
+        self.node: Node = rclpy.create_node(
+            f'_labkit_{os.getpid()}', context=self.context,
+            start_parameter_services=False, enable_rosout=False)
+        self.created = time.monotonic()
+
+    def close(self) -> None:
+        self.node.destroy_node()
+        self.context.try_shutdown()
+
+    def call(self, srv_type: Any, service: str, request: Any, timeout: float = 5.0) -> Any:
+        """Call a service once; returns the response or None if nobody answered."""
+        client = self.node.create_client(srv_type, service)
+        try:
+            if not client.wait_for_service(timeout_sec=timeout):
+                return None
+            future = client.call_async(request)
+            executor = SingleThreadedExecutor(context=self.context)
+            executor.add_node(self.node)
+            try:
+                executor.spin_until_future_complete(future, timeout_sec=timeout)
+            finally:
+                executor.remove_node(self.node)
+                executor.shutdown()
+            return future.result() if future.done() else None
+        finally:
+            self.node.destroy_client(client)
+
+
+def observer() -> Observer:
+    """The kernel's observer, created on first use."""
+    global _observer
+    with _lock:
+        if _observer is None:
+            _observer = Observer()
+        return _observer
+
+
+@atexit.register
+def _close_observer() -> None:
+    global _observer
+    with _lock:
+        if _observer is not None:
+            _observer.close()
+            _observer = None
+
+
+def full_name(name: str, namespace: str) -> str:
+    """`/ns` + `name` -> `/ns/name`."""
+    return namespace.rstrip('/') + '/' + name
+
+
+def is_hidden(name: str) -> bool:
+    """ROS hides names with a token starting with `_` (like labkit's own node)."""
+    return any(token.startswith('_') for token in name.split('/') if token)
+
+
+def node_names(include_hidden: bool = False) -> list[str]:
+    """Full names of the nodes in the graph right now, sorted."""
+    node = observer().node
+    names = {full_name(n, ns) for n, ns in node.get_node_names_and_namespaces()}
+    return sorted(n for n in names if include_hidden or not is_hidden(n))
+
+
+def _fingerprint(node: Node) -> tuple:
+    return (sorted(node.get_node_names_and_namespaces()),
+            sorted((name, tuple(types)) for name, types in node.get_topic_names_and_types()),
+            sorted((name, tuple(types)) for name, types in node.get_service_names_and_types()))
+
+
+def settle(max_wait: float = 6.0) -> None:
+    """Wait until the graph the observer sees is complete and stable.
+
+    The first call in a kernel waits a full discovery period; later calls
+    only until nothing has changed for a moment.
+    """
+    obs = observer()
+    start = time.monotonic()
+    first_look_done = obs.created + FIRST_LOOK_WAIT
+    last, last_change = None, start
+    while True:
+        now = time.monotonic()
+        current = _fingerprint(obs.node)
+        if current != last:
+            last, last_change = current, now
+        if now >= first_look_done and now - last_change >= QUIET_TIME:
+            return
+        if now - start >= max_wait:
+            return
+        time.sleep(0.05)

@@ -1,0 +1,75 @@
+"""Sidecar that kills a background launch when the notebook kernel dies.
+
+    python -m labkit.watchdog OWNER_PID PGID
+
+labkit starts one per background process, in a session of its own so that
+whatever kills the kernel (a crash, a restart, a cell timeout that kills
+the kernel's process group) does not kill the watchdog too.  It is a child
+of the kernel, so when the kernel is gone its parent changes; it then stops
+the process group PGID (SIGINT, SIGTERM, SIGKILL) and exits.  It also exits
+by itself once the group is empty, e.g. after `run.stop()`.
+"""
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import time
+
+import psutil
+
+POLL = 0.2
+#: (signal, seconds to wait for the group to go away after sending it)
+ESCALATION = ((signal.SIGINT, 3.0), (signal.SIGTERM, 2.0), (signal.SIGKILL, 2.0))
+
+
+def group_members(pgid: int) -> list[psutil.Process]:
+    """Live (non-zombie) processes of a process group."""
+    members = []
+    for proc in psutil.process_iter(['status']):
+        try:
+            if os.getpgid(proc.pid) == pgid and proc.info['status'] != psutil.STATUS_ZOMBIE:
+                members.append(proc)
+        except (ProcessLookupError, psutil.Error):
+            continue
+    return members
+
+
+def stop_group(pgid: int, escalation: tuple = ESCALATION) -> bool:
+    """Signal the group, escalating until it is empty; True when it is."""
+    for sig, wait in escalation:
+        if not group_members(pgid):
+            return True
+        try:
+            os.killpg(pgid, sig)
+        except ProcessLookupError:
+            return True
+        deadline = time.monotonic() + wait
+        while time.monotonic() < deadline:
+            if not group_members(pgid):
+                return True
+            time.sleep(0.05)
+    return not group_members(pgid)
+
+
+def watch(owner_pid: int, pgid: int) -> int:
+    """Wait for the owner to die (then stop the group) or the group to end."""
+    while True:
+        if os.getppid() != owner_pid:
+            return 0 if stop_group(pgid) else 1
+        if not group_members(pgid):
+            return 0
+        time.sleep(POLL)
+
+
+def main(argv: list[str]) -> int:
+    if len(argv) != 2 or not all(arg.isdigit() for arg in argv):
+        print('usage: python -m labkit.watchdog OWNER_PID PGID', file=sys.stderr)
+        return 2
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # labkit's stop() ends us
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    return watch(int(argv[0]), int(argv[1]))
+
+
+if __name__ == '__main__':
+    sys.exit(main(sys.argv[1:]))
