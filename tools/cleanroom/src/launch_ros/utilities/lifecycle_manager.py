@@ -4,7 +4,7 @@
   in order, to `<node>/change_state` by a worker thread that first waits
   for the service (the node may still be starting).
 - Every message on `<node>/transition_event` becomes a StateTransition
-  event, handed to the launch loop thread-safely.
+  event, handed to the launch loop with the thread-safe emit_event_sync.
 """
 from __future__ import annotations
 
@@ -65,12 +65,9 @@ class LifecycleManager:
         threading.Thread(target=self._work, name=f'lifecycle {name}', daemon=True).start()
 
     def _on_transition_event(self, msg: Any) -> None:
-        event = StateTransition(action=self.__action, msg=msg)
-        loop = self.__context.asyncio_loop
-        try:
-            loop.call_soon_threadsafe(self.__context.emit_event_sync, event)
-        except RuntimeError:
-            pass  # the launch loop is closed: the launch is over
+        # emit_event_sync is thread-safe: it wakes the launch loop from this
+        # executor thread, and drops the event once the launch is over.
+        self.__context.emit_event_sync(StateTransition(action=self.__action, msg=msg))
 
     def _on_change_state(self, event: ChangeState, context: LaunchContext) -> None:
         if event.lifecycle_node_matcher(self.__action):
