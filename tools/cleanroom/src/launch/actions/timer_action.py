@@ -11,8 +11,10 @@ from ..launch_description_entity import LaunchDescriptionEntity
 from .scope_actions import (
     PopEnvironment,
     PopLaunchConfigurations,
+    PopLocals,
     PushEnvironment,
     PushLaunchConfigurations,
+    PushLocals,
 )
 
 if TYPE_CHECKING:
@@ -38,8 +40,9 @@ class _RestoreScope(Action):
 class TimerAction(Action):
     """After `period` seconds, visit `actions` as if they were where the timer is.
 
-    The launch configurations and environment of the timer's scope are
-    saved when it starts and restored for its actions (e.g. a namespace
+    The launch configurations, environment and locals (e.g. the current
+    launch file) of the timer's scope are saved when it starts and restored
+    for its actions (e.g. a namespace
     pushed in an enclosing group still applies).  The timer is cancelled on
     shutdown unless `cancel_on_shutdown=False`.
     """
@@ -111,8 +114,9 @@ class TimerAction(Action):
             self.__future.set_result(None)
             return None
         saved = (dict(context.launch_configurations), dict(context.environment))
-        entities = [PushLaunchConfigurations(), PushEnvironment(), _RestoreScope(*saved),
-                    *self.__actions, PopEnvironment(), PopLaunchConfigurations()]
+        entities = [PushLaunchConfigurations(), PushEnvironment(),
+                    PushLocals(context.get_locals_as_dict()), _RestoreScope(*saved),
+                    *self.__actions, PopLocals(), PopEnvironment(), PopLaunchConfigurations()]
         handler = EventHandler(
             matcher=lambda event: isinstance(event, TimerEvent) and event.timer_action is self,
             entities=entities, handle_once=True)

@@ -1,9 +1,11 @@
-"""Predicates selecting the events of one action."""
+"""Predicates selecting one action, for events that target actions."""
 from typing import Callable
 
-from ..event import Event
 
+def matches_action(target_action: object) -> Callable[[object], bool]:
+    """Return a predicate true for `target_action` itself.
 
-def matches_action(target_action: object) -> Callable[[Event], bool]:
-    """Return a predicate true for events whose `action` is `target_action`."""
-    return lambda event: getattr(event, 'action', None) is target_action
+    Used as `process_matcher` of ShutdownProcess/SignalProcess/ProcessStdin
+    and as `lifecycle_node_matcher` of launch_ros' ChangeState.
+    """
+    return lambda action: action is target_action
