@@ -32,25 +32,51 @@ def to_networkx(snapshot: Any) -> nx.DiGraph:
     return graph
 
 
-def layers(graph: nx.DiGraph) -> list[list[str]]:
-    """Vertices in columns: each one right of everything that feeds it (cycles share a column).
+def without_cycles(graph: nx.DiGraph) -> nx.DiGraph:
+    """The graph minus the edges that close a cycle (a feedback loop's way back).
 
-    Within a column, vertices sit near the average row of their inputs (one
-    barycentre sweep, ties by name), which keeps arrows short and uncrossed.
+    Found by depth-first search from the sources, in name order, so the same
+    graph always loses the same edges.
     """
-    condensed = nx.condensation(graph)
-    column_of = {}
-    for index, generation in enumerate(nx.topological_generations(condensed)):
-        for component in generation:
-            for vertex in condensed.nodes[component]['members']:
-                column_of[vertex] = index
+    dag = nx.DiGraph()
+    dag.add_nodes_from(graph.nodes)
+    state: dict[str, str] = {}
+
+    def visit(vertex: str) -> None:
+        state[vertex] = 'open'
+        for successor in sorted(graph.successors(vertex)):
+            if state.get(successor) == 'open':
+                continue  # leads back to a vertex on the current path
+            dag.add_edge(vertex, successor)
+            if successor not in state:
+                visit(successor)
+        state[vertex] = 'done'
+
+    for vertex in sorted(graph.nodes, key=lambda v: (graph.in_degree(v) > 0, v)):
+        if vertex not in state:
+            visit(vertex)
+    return dag
+
+
+def layers(graph: nx.DiGraph) -> list[list[str]]:
+    """Vertices in columns, each right of everything that feeds it.
+
+    A feedback loop is laid out along the data flow and only its way back
+    points left.  Within a column, vertices sit near the average row of
+    their inputs (one barycentre sweep, ties by name), which keeps arrows
+    short and uncrossed.
+    """
+    dag = without_cycles(graph)
+    column_of: dict[str, int] = {}
+    for vertex in nx.lexicographical_topological_sort(dag):
+        column_of[vertex] = max((column_of[p] + 1 for p in dag.predecessors(vertex)), default=0)
     columns: list[list[str]] = [[] for _ in range(max(column_of.values(), default=-1) + 1)]
     for vertex in sorted(graph.nodes):
         columns[column_of[vertex]].append(vertex)
     row_of: dict[str, float] = {}
     for column in columns:
         def barycentre(vertex: str) -> tuple[float, str]:
-            rows = [row_of[p] for p in graph.predecessors(vertex) if p in row_of]
+            rows = [row_of[p] for p in dag.predecessors(vertex) if p in row_of]
             return (sum(rows) / len(rows) if rows else float('inf'), vertex)
         column.sort(key=barycentre)
         for row, vertex in enumerate(column):
@@ -79,9 +105,12 @@ def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | N
         snapshot = take_snapshot()
     graph = to_networkx(snapshot)
     positions = layout(graph)
-    columns = max((len(column) for column in layers(graph)), default=1)
-    width = max(6.0, 2.3 * (max((x for x, _ in positions.values()), default=0) / X_GAP + 1))
-    figure = plt.figure(figsize=(width, max(2.5, 0.85 * columns + 1.0)))
+    columns = layers(graph)
+    rows = max((len(column) for column in columns), default=1)
+    # About 1.6 inches per column keeps 9 pt labels apart and a 9-column
+    # system readable at notebook width.
+    width = min(15.0, max(6.0, 1.6 * len(columns)))
+    figure = plt.figure(figsize=(width, max(2.5, 0.8 * rows + 1.0)))
     plt.close(figure)  # returned, not also auto-shown: Jupyter displays it once
     axes = figure.add_subplot()
     axes.set_axis_off()
@@ -100,9 +129,13 @@ def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | N
                                    bbox=NODE_STYLE if kind == 'node' else TOPIC_STYLE,
                                    zorder=3)
     for source, target in sorted(graph.edges):
-        axes.annotate('', xy=positions[target], xytext=positions[source], zorder=2,
+        backwards = positions[target][0] <= positions[source][0]
+        # Drawn after the labels (higher zorder), so that their boxes are in
+        # place when each arrow is clipped to them and its head stays visible.
+        axes.annotate('', xy=positions[target], xytext=positions[source], zorder=4,
                       arrowprops=dict(arrowstyle='-|>', color='#4a5568', linewidth=1.1,
                                       shrinkA=2, shrinkB=2,
+                                      connectionstyle=f'arc3,rad={0.4 if backwards else 0}',
                                       patchA=labels[source].get_bbox_patch(),
                                       patchB=labels[target].get_bbox_patch()))
     xs = [x for x, _ in positions.values()]
