@@ -1,10 +1,11 @@
 """Sidecar that kills a background launch when the notebook kernel dies.
 
-    python -m labkit.watchdog OWNER_PID PGID
+    python .../labkit/watchdog.py OWNER_PID PGID
 
-labkit starts one per background process, in a session of its own so that
-whatever kills the kernel (a crash, a restart, a cell timeout that kills
-the kernel's process group) does not kill the watchdog too.  It is a child
+labkit starts one per background process (by path: it needs only psutil),
+in a session of its own so that whatever kills the kernel (a crash, a
+restart, a cell timeout that kills the kernel's process group) does not
+kill the watchdog too.  It is a child
 of the kernel, so when the kernel is gone its parent changes; it then stops
 the process group PGID (SIGINT, SIGTERM, SIGKILL) and exits.  It also exits
 by itself once the group is empty, e.g. after `run.stop()`.
@@ -64,7 +65,7 @@ def watch(owner_pid: int, pgid: int) -> int:
 
 def main(argv: list[str]) -> int:
     if len(argv) != 2 or not all(arg.isdigit() for arg in argv):
-        print('usage: python -m labkit.watchdog OWNER_PID PGID', file=sys.stderr)
+        print('usage: watchdog.py OWNER_PID PGID', file=sys.stderr)
         return 2
     signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # labkit's stop() ends us
     signal.signal(signal.SIGINT, signal.SIG_IGN)

@@ -1,0 +1,106 @@
+"""Nothing labkit starts survives its owner: killed kernel or normal exit.
+
+The owner is a separate Python process standing in for a notebook kernel;
+it starts a launch with labkit and prints the process group to watch.
+"""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+import time
+
+import psutil
+import pytest
+from labkit.background import WATCHDOG
+from labkit.watchdog import group_members, stop_group
+
+OWNER = textwrap.dedent("""
+    import sys, time
+    import labkit
+    run = labkit.launch('my_robot_pkg', 'robot_system.launch.py')
+    run.wait_for_nodes(['/sensor_publisher', '/data_processor'])
+    print(run.pid, run._watchdog.pid, flush=True)
+    if sys.argv[1] == 'exit':
+        sys.exit(0)  # leave without stop(): atexit must stop the launch
+    time.sleep(600)
+""")
+
+
+def _wait_until_gone(pids: list[int], timeout: float) -> list[int]:
+    """Poll until none of `pids` runs (zombies count as gone); return the survivors."""
+    deadline = time.monotonic() + timeout
+    while True:
+        alive = []
+        for pid in pids:
+            try:
+                if psutil.Process(pid).status() != psutil.STATUS_ZOMBIE:
+                    alive.append(pid)
+            except psutil.NoSuchProcess:
+                pass
+        if not alive or time.monotonic() > deadline:
+            return alive
+        time.sleep(0.2)
+
+
+@pytest.fixture
+def owner(ros_env):
+    started = []
+
+    def start(mode: str) -> tuple[subprocess.Popen, int, int]:
+        proc = subprocess.Popen([sys.executable, '-c', OWNER, mode], env=ros_env,
+                                stdout=subprocess.PIPE, text=True, start_new_session=True)
+        started.append(proc)
+        launch_pid, watchdog_pid = map(int, proc.stdout.readline().split())
+        return proc, launch_pid, watchdog_pid
+
+    yield start
+    for proc in started:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait()
+
+
+def test_watchdog_stops_the_launch_when_the_owner_is_killed(owner):
+    proc, launch_pid, watchdog_pid = owner('sleep')
+    launched = [p.pid for p in group_members(launch_pid)]
+    assert len(launched) >= 3  # ros2 launch and its two nodes
+    proc.kill()  # SIGKILL: no atexit, no cleanup in the owner
+    proc.wait()
+    survivors = _wait_until_gone(launched + [watchdog_pid], timeout=30)
+    if survivors:  # leave nothing behind even when the assertion fails
+        stop_group(launch_pid)
+    assert survivors == []
+
+
+def test_interpreter_exit_stops_what_is_still_running(owner):
+    proc, launch_pid, watchdog_pid = owner('exit')
+    assert proc.wait(timeout=60) == 0
+    assert group_members(launch_pid) == []
+    assert _wait_until_gone([watchdog_pid], timeout=10) == []
+
+
+def test_watchdog_exits_by_itself_when_the_group_is_gone(tmp_path):
+    sleeper = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'],
+                               start_new_session=True)
+    watchdog = subprocess.Popen([sys.executable, WATCHDOG, str(os.getpid()), str(sleeper.pid)],
+                                start_new_session=True)
+    try:
+        time.sleep(0.5)
+        assert watchdog.poll() is None  # owner alive, group alive: keeps watching
+        sleeper.kill()
+        sleeper.wait()
+        assert watchdog.wait(timeout=10) == 0
+    finally:
+        for proc in (sleeper, watchdog):
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+
+
+def test_watchdog_usage_error():
+    result = subprocess.run([sys.executable, WATCHDOG, 'x'], capture_output=True, text=True)
+    assert (result.returncode, result.stderr) == (
+        2, 'usage: watchdog.py OWNER_PID PGID\n')
