@@ -5,10 +5,10 @@
 labkit starts one per background process (by path: it needs only psutil),
 in a session of its own so that whatever kills the kernel (a crash, a
 restart, a cell timeout that kills the kernel's process group) does not
-kill the watchdog too.  It is a child
-of the kernel, so when the kernel is gone its parent changes; it then stops
-the process group PGID (SIGINT, SIGTERM, SIGKILL) and exits.  It also exits
-by itself once the group is empty, e.g. after `run.stop()`.
+kill the watchdog too.  It is a child of the kernel, so when the kernel is
+gone its parent changes; it then stops the process group PGID (SIGINT,
+SIGTERM, SIGKILL) and exits.  It also exits by itself once the group is
+empty, e.g. after `run.stop()`.
 """
 from __future__ import annotations
 
