@@ -13,7 +13,7 @@ from typing import Any, Optional, Union
 from launch import LaunchContext, Substitution
 from launch.utilities import normalize_to_list_of_substitutions
 
-from .utilities.param_files import write_temporary_file
+from .utilities.param_files import remove_temporary_file, write_temporary_file
 from .utilities.parameter_values import coerce_value, plain_python_value
 from .utilities.substitution_values import evaluate_value, is_substitution_text, perform_text
 
@@ -138,10 +138,7 @@ class ParameterFile:
     def cleanup(self) -> None:
         """Delete the temporary file made by `evaluate()`, if any."""
         if self.__created is not None:
-            try:
-                os.unlink(self.__created)
-            except FileNotFoundError:
-                pass
+            remove_temporary_file(self.__created)
             self.__created = None
 
     def __repr__(self) -> str:

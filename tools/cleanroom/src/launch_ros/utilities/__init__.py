@@ -1,30 +1,17 @@
 """Helpers shared by launch_ros actions.
 
-Pure helpers (namespaces, parameter typing, command lines) import nothing
-from `launch`; the ones that evaluate substitutions are loaded on first use.
+Modules and the functions they hold share names (as in Jazzy), so the
+functions are imported here eagerly: `launch_ros.utilities.evaluate_parameters`
+is the function, not the module.
 """
-from __future__ import annotations
-
-import importlib
-from typing import Any
-
+from .evaluate_parameters import evaluate_parameter_dict, evaluate_parameters
 from .namespace_utils import make_namespace_absolute, prefix_namespace
+from .normalize_parameters import normalize_parameter_dict, normalize_parameters
+from .normalize_remap_rule import normalize_remap_rule, normalize_remap_rules
+from .track_node_names import add_node_name, get_node_name_count
 
-_LAZY = {
-    'normalize_parameters': 'launch_ros.utilities.normalize_parameters',
-    'normalize_parameter_dict': 'launch_ros.utilities.normalize_parameters',
-    'evaluate_parameters': 'launch_ros.utilities.evaluate_parameters',
-    'evaluate_parameter_dict': 'launch_ros.utilities.evaluate_parameters',
-    'normalize_remap_rule': 'launch_ros.utilities.normalize_remap_rule',
-    'normalize_remap_rules': 'launch_ros.utilities.normalize_remap_rule',
-    'add_node_name': 'launch_ros.utilities.track_node_names',
-    'get_node_name_count': 'launch_ros.utilities.track_node_names',
-}
-
-__all__ = ['make_namespace_absolute', 'prefix_namespace', *_LAZY]
-
-
-def __getattr__(name: str) -> Any:
-    if name in _LAZY:
-        return getattr(importlib.import_module(_LAZY[name]), name)
-    raise AttributeError(f'module {__name__!r} has no attribute {name!r}')
+__all__ = [
+    'add_node_name', 'evaluate_parameter_dict', 'evaluate_parameters', 'get_node_name_count',
+    'make_namespace_absolute', 'normalize_parameter_dict', 'normalize_parameters',
+    'normalize_remap_rule', 'normalize_remap_rules', 'prefix_namespace',
+]

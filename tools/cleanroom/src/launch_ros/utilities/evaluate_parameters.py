@@ -12,7 +12,8 @@ from typing import Any, Union
 
 from launch import LaunchContext
 
-from ..parameter_descriptions import Parameter, ParameterFile
+# Module import: parameter_descriptions imports this package (circular otherwise).
+from .. import parameter_descriptions as descriptions
 from .normalize_parameters import NormalizedParameter, NormalizedParameterDict
 from .substitution_values import perform_text
 
@@ -37,9 +38,9 @@ def evaluate_parameters(context: LaunchContext,
                         parameters: Sequence[NormalizedParameter]) -> list[EvaluatedParameter]:
     evaluated: list[EvaluatedParameter] = []
     for entry in parameters:
-        if isinstance(entry, ParameterFile):
+        if isinstance(entry, descriptions.ParameterFile):
             evaluated.append(entry.evaluate(context))
-        elif isinstance(entry, Parameter):
+        elif isinstance(entry, descriptions.Parameter):
             evaluated.append(entry.evaluate(context))
         else:
             evaluated.append(evaluate_parameter_dict(context, entry))

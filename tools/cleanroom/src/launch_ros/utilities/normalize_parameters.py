@@ -17,10 +17,12 @@ from typing import Any, Union
 
 from launch import Substitution
 
-from ..parameter_descriptions import Parameter, ParameterFile, ParameterValue
+# Module import: parameter_descriptions imports this package (circular otherwise).
+from .. import parameter_descriptions as descriptions
 
-NormalizedParameterDict = dict[tuple[Any, ...], ParameterValue]
-NormalizedParameter = Union[ParameterFile, Parameter, NormalizedParameterDict]
+# {name parts: ParameterValue}; ParameterFile | Parameter | that dict.
+NormalizedParameterDict = dict[tuple[Any, ...], Any]
+NormalizedParameter = Union[Any, NormalizedParameterDict]
 
 
 def _is_path_like(entry: Any) -> bool:
@@ -40,10 +42,10 @@ def normalize_parameter_dict(parameters: Mapping[Any, Any],
         name = _prefix + (list(key) if isinstance(key, (tuple, list)) else key,)
         if isinstance(value, Mapping):
             normalized.update(normalize_parameter_dict(value, name))
-        elif isinstance(value, ParameterValue):
+        elif isinstance(value, descriptions.ParameterValue):
             normalized[name] = value
         else:
-            normalized[name] = ParameterValue(value)
+            normalized[name] = descriptions.ParameterValue(value)
     return normalized
 
 
@@ -54,12 +56,12 @@ def normalize_parameters(parameters: Sequence[Any]) -> list[NormalizedParameter]
             f"'parameters' must be a list of files, dicts or Parameter, got {parameters!r}")
     normalized: list[NormalizedParameter] = []
     for entry in parameters:
-        if isinstance(entry, (ParameterFile, Parameter)):
+        if isinstance(entry, (descriptions.ParameterFile, descriptions.Parameter)):
             normalized.append(entry)
         elif isinstance(entry, Mapping):
             normalized.append(normalize_parameter_dict(entry))
         elif _is_path_like(entry):
-            normalized.append(ParameterFile(entry))
+            normalized.append(descriptions.ParameterFile(entry))
         else:
             raise TypeError(
                 f"'parameters' entries must be a parameter file path, a dict or a "

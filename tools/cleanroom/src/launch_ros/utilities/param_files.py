@@ -65,6 +65,18 @@ def temporary_files(owner: Hashable = None) -> list[str]:
         return list(_created.get(owner, []))
 
 
+def remove_temporary_file(path: str) -> None:
+    """Delete one file written here and forget it (ParameterFile.cleanup)."""
+    with _lock:
+        for paths in _created.values():
+            if path in paths:
+                paths.remove(path)
+    try:
+        os.unlink(path)
+    except FileNotFoundError:
+        pass
+
+
 def remove_temporary_files(owner: Hashable = None) -> None:
     """Delete the files of `owner` (of everyone if None); missing files are fine."""
     with _lock:
