@@ -28,7 +28,8 @@ def _marked_processes(token: str) -> list[psutil.Process]:
         if proc.pid == os.getpid():
             continue
         try:
-            if proc.environ().get(TOKEN_VAR) == token:
+            if proc.environ().get(TOKEN_VAR) == token and \
+                    proc.status() != psutil.STATUS_ZOMBIE:  # zombies are dead already
                 found.append(proc)
         except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
             continue

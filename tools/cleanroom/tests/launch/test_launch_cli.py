@@ -1,0 +1,121 @@
+"""`ros2 launch` and `ros2 run` against a package laid out like a colcon install."""
+from __future__ import annotations
+
+import signal
+import subprocess
+import time
+
+from conftest import ROS2
+
+SHOW_ARGS = """Arguments (pass arguments as '<name>:=<value>'):
+
+    'speed':
+        Top speed
+        in m/s
+        (default: '1.5')
+
+    'mode':
+        One of: ['a', 'b']
+
+    'name':
+        no description given
+        (default: 'bot_' + LaunchConfig('mode'))
+"""
+
+
+def test_show_args(ros2, fake_prefix):
+    result = ros2('launch', 'cr_pkg', 'args.launch.py', '--show-args')
+    assert (result.returncode, result.stdout, result.stderr) == (0, SHOW_ARGS, '')
+    path = str(fake_prefix / 'share/cr_pkg/launch/args.launch.py')
+    assert ros2('launch', path, '-s').stdout == SHOW_ARGS
+
+
+def test_launch_with_arguments_by_package_and_by_path(ros2, fake_prefix):
+    result = ros2('launch', 'cr_pkg', 'args.launch.py', 'mode:=b', 'speed:=3')
+    assert result.returncode == 0
+    assert '[INFO] [launch.user]: speed=3 mode=b name=bot_b' in result.stdout.splitlines()
+    path = str(fake_prefix / 'share/cr_pkg/launch/args.launch.py')
+    result = ros2('launch', path, 'mode:=a')
+    assert '[INFO] [launch.user]: speed=1.5 mode=a name=bot_a' in result.stdout.splitlines()
+
+
+def test_launch_errors(ros2, fake_prefix):
+    missing = ros2('launch', 'cr_pkg', 'args.launch.py')
+    assert missing.returncode == 1
+    assert missing.stdout.splitlines()[-1] == (
+        '[ERROR] [launch]: Caught exception in launch (see debug for traceback): Included '
+        "launch description missing required argument 'mode' (description: 'One of: "
+        "['a', 'b']'), given: []")
+    choice = ros2('launch', 'cr_pkg', 'args.launch.py', 'mode:=c')
+    assert choice.returncode == 1
+    assert 'Argument "mode" provided value "c" is not valid.' in choice.stdout
+    nope = ros2('launch', 'cr_pkg', 'nope.launch.py')
+    assert (nope.returncode, nope.stdout) == (1, '')
+    assert nope.stderr == (f"file 'nope.launch.py' was not found in the share directory of "
+                           f"package 'cr_pkg' which is at '{fake_prefix}/share/cr_pkg'\n")
+    no_pkg = ros2('launch', 'no_pkg', 'x.launch.py')
+    assert no_pkg.returncode == 1
+    assert no_pkg.stderr == (f"Package 'no_pkg' not found: \"package 'no_pkg' not found, "
+                             f"searching: ['{fake_prefix}']\"\n")
+    malformed = ros2('launch', 'cr_pkg', 'args.launch.py', 'mode:=a', 'oops')
+    assert (malformed.returncode, malformed.stdout) == (1, '')
+    assert malformed.stderr == ("malformed launch argument 'oops', expected format "
+                                "'<name>:=<value>'\n")
+
+
+def test_print_description(ros2):
+    result = ros2('launch', 'cr_pkg', 'args.launch.py', '--print')
+    assert result.returncode == 0
+    assert "DeclareLaunchArgument('speed')" in result.stdout
+    assert 'LogInfo(' in result.stdout
+
+
+def test_show_all_subprocesses_output(ros2, tmp_path):
+    launch_file = tmp_path / 'quiet.launch.py'
+    launch_file.write_text(
+        'from launch import LaunchDescription\n'
+        'from launch.actions import ExecuteProcess\n'
+        'def generate_launch_description():\n'
+        "    return LaunchDescription([ExecuteProcess(cmd=['echo', 'QUIET'], name='q')])\n")
+    assert '[q-1] QUIET' not in ros2('launch', str(launch_file)).stdout
+    assert '[q-1] QUIET' in ros2('launch', str(launch_file), '-a').stdout.splitlines()
+
+
+def test_launch_prefix(ros2, tmp_path):
+    launch_file = tmp_path / 'prefixed.launch.py'
+    launch_file.write_text(
+        'from launch import LaunchDescription\n'
+        'from launch.actions import ExecuteProcess\n'
+        'def generate_launch_description():\n'
+        "    return LaunchDescription([ExecuteProcess(cmd=['payload'], name='p',"
+        " output='screen')])\n")
+    result = ros2('launch', str(launch_file), '--launch-prefix', 'echo PREFIX')
+    assert '[p-1] PREFIX payload' in result.stdout.splitlines()
+
+
+def test_run_passes_arguments_and_prefix(ros2):
+    result = ros2('run', 'cr_pkg', 'echo_args', 'a', 'b c', '--ros-args', '-r', 'x:=y')
+    assert (result.returncode, result.stdout) == (0, 'args: a b c --ros-args -r x:=y\n')
+    prefixed = ros2('run', '--prefix', 'echo PRE', 'cr_pkg', 'echo_args', 'z')
+    assert prefixed.stdout.startswith('PRE ') and prefixed.stdout.rstrip().endswith(
+        '/lib/cr_pkg/echo_args z')
+
+
+def test_run_errors_and_exit_codes(ros2):
+    failed = ros2('run', 'cr_pkg', 'exit_with', '3')
+    assert (failed.returncode, failed.stdout) == (3, '[ros2run]: Process exited with failure 3\n')
+    assert (ros2('run', 'cr_pkg', 'exit_with', '0').returncode) == 0
+    no_exe = ros2('run', 'cr_pkg', 'nope')
+    assert (no_exe.returncode, no_exe.stderr) == (1, 'No executable found\n')
+    no_pkg = ros2('run', 'no_pkg', 'talker')
+    assert (no_pkg.returncode, no_pkg.stderr) == (1, "Package 'no_pkg' not found\n")
+
+
+def test_run_forwards_sigint(cli_env):
+    proc = subprocess.Popen([ROS2, 'run', 'cr_pkg', 'wait_for_signal'], env=cli_env,
+                            stdout=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL)
+    assert proc.stdout.readline() == 'ready\n'
+    time.sleep(0.1)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=10)
+    assert (proc.returncode, out) == (0, 'got INT\n')

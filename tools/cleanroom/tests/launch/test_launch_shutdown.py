@@ -1,0 +1,125 @@
+"""Shutdown: SIGINT, then SIGTERM, then SIGKILL; signals to `ros2 launch` reap children."""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+from collections.abc import Callable, Iterator
+
+import psutil
+import pytest
+from conftest import ROS2
+from launch.actions import ExecuteProcess, RegisterEventHandler, Shutdown
+from launch.event_handlers import OnProcessIO
+
+IGNORE_INT_AND_TERM = ('import signal, time; signal.signal(signal.SIGINT, signal.SIG_IGN); '
+                       'signal.signal(signal.SIGTERM, signal.SIG_IGN); '
+                       'print("ready", flush=True); time.sleep(30)')
+IGNORE_INT_ONLY = ('import signal, sys, time; signal.signal(signal.SIGINT, signal.SIG_IGN); '
+                   'signal.signal(signal.SIGTERM, lambda *a: sys.exit(0)); '
+                   'print("ready", flush=True); time.sleep(30)')
+
+
+def _shutdown_when_ready(action: ExecuteProcess) -> RegisterEventHandler:
+    """Shut down once the child printed 'ready' (its signal handlers are in place)."""
+    return RegisterEventHandler(OnProcessIO(
+        target_action=action,
+        on_stdout=lambda event: [Shutdown(reason='test')] if b'ready' in event.text else None))
+
+
+def test_child_ignoring_sigint_and_sigterm_gets_sigkill(run_launch):
+    stubborn = ExecuteProcess(cmd=[sys.executable, '-c', IGNORE_INT_AND_TERM], name='stubborn',
+                              sigterm_timeout='0.2', sigkill_timeout='0.3')
+    result = run_launch([_shutdown_when_ready(stubborn), stubborn])
+    lines = [line for line in result.output.splitlines() if '[stubborn-1]' in line]
+    assert lines[1:5] == [
+        "[INFO] [stubborn-1]: sending signal 'SIGINT' to process[stubborn-1]",
+        "[ERROR] [stubborn-1]: process[stubborn-1] failed to terminate '0.2' seconds after "
+        "receiving 'SIGINT', escalating to 'SIGTERM'",
+        "[INFO] [stubborn-1]: sending signal 'SIGTERM' to process[stubborn-1]",
+        "[ERROR] [stubborn-1]: process[stubborn-1] failed to terminate '0.5' seconds after "
+        "receiving 'SIGTERM', escalating to 'SIGKILL'",
+    ]
+    assert lines[5] == "[INFO] [stubborn-1]: sending signal 'SIGKILL' to process[stubborn-1]"
+    assert 'exit code -9' in lines[6]
+    assert result.returncode == 0
+
+
+def test_child_ignoring_sigint_stops_at_sigterm(run_launch):
+    polite = ExecuteProcess(cmd=[sys.executable, '-c', IGNORE_INT_ONLY], name='polite')
+    result = run_launch([_shutdown_when_ready(polite), polite],
+                        argv=('sigterm_timeout:=0.2',))
+    assert "sending signal 'SIGTERM' to process[polite-1]" in result.output
+    assert 'SIGKILL' not in result.output
+    assert '[INFO] [polite-1]: process has finished cleanly' in result.output
+
+
+@pytest.fixture
+def start_launch(cli_env: dict) -> Iterator[Callable[..., subprocess.Popen]]:
+    """Start `ros2 launch ARGS` and return it once its 4 processes have started.
+
+    Whatever the test does, the launch is killed and reaped afterwards.
+    """
+    started: list[subprocess.Popen] = []
+
+    def start(*args: str) -> subprocess.Popen:
+        proc = subprocess.Popen([ROS2, 'launch', *args], env=cli_env, stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL)
+        started.append(proc)
+        _wait_for_starts(proc, 4)
+        return proc
+
+    yield start
+    for proc in started:
+        if proc.poll() is None:
+            proc.kill()
+        proc.communicate()
+
+
+def _wait_for_starts(proc: subprocess.Popen, count: int) -> list[str]:
+    lines: list[str] = []
+    deadline = time.monotonic() + 20
+    while sum('process started' in line for line in lines) < count:
+        line = proc.stdout.readline()
+        assert line and time.monotonic() < deadline, lines
+        lines.append(line.rstrip('\n'))
+    return lines
+
+
+def _children(proc: subprocess.Popen) -> list[psutil.Process]:
+    return psutil.Process(proc.pid).children(recursive=True)
+
+
+def test_sigint_to_ros2_launch_stops_all_children(start_launch):
+    proc = start_launch('cr_pkg', 'procs.launch.py')
+    children = _children(proc)
+    assert len(children) >= 3  # the sleepers; 'hello' may already have exited
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=20)
+    assert proc.returncode == 0
+    assert '[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)' in out
+    assert "sending signal 'SIGINT' to process[sleeper-1]" in out
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
+
+
+def test_sigterm_to_ros2_launch_stops_all_children(start_launch):
+    proc = start_launch('cr_pkg', 'procs.launch.py')
+    children = _children(proc)
+    proc.send_signal(signal.SIGTERM)
+    out, _ = proc.communicate(timeout=20)
+    assert proc.returncode == 0
+    assert "sending signal 'SIGINT' to process[sleeper-3]" in out
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
+
+
+def test_killed_launch_takes_its_children_along(start_launch):
+    proc = start_launch('cr_pkg', 'procs.launch.py')
+    children = _children(proc)
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.communicate(timeout=20)
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
