@@ -104,3 +104,47 @@ def test_watchdog_usage_error():
     result = subprocess.run([sys.executable, WATCHDOG, 'x'], capture_output=True, text=True)
     assert (result.returncode, result.stderr) == (
         2, 'usage: watchdog.py OWNER_PID PGID\n')
+
+
+def _execute(client, code: str, timeout: float = 120) -> list[dict]:
+    """Run a cell; return its output messages (stream, display, result, error)."""
+    msg_id = client.execute(code)
+    outputs = []
+    while True:
+        msg = client.get_iopub_msg(timeout=timeout)
+        if msg['parent_header'].get('msg_id') != msg_id:
+            continue
+        if msg['msg_type'] == 'status' and msg['content']['execution_state'] == 'idle':
+            return outputs
+        if msg['msg_type'] in ('stream', 'display_data', 'execute_result', 'error'):
+            outputs.append(msg)
+
+
+def test_in_a_notebook_kernel_the_graph_displays_once_and_a_dead_kernel_leaves_nothing(
+        ros_env, tmp_path):
+    from jupyter_client.manager import start_new_kernel
+
+    manager, client = start_new_kernel(kernel_name='python3', env=ros_env, cwd=str(tmp_path))
+    try:
+        outputs = _execute(client, textwrap.dedent("""
+            import os, labkit
+            run = labkit.launch('my_robot_pkg', 'robot_system.launch.py')
+            run.wait_for_nodes(['/sensor_publisher', '/data_processor'])
+            print(run.pid, os.getpid())
+            labkit.draw_graph()
+        """))
+        assert not [o for o in outputs if o['msg_type'] == 'error'], outputs
+        launch_pid, kernel_pid = map(int, next(
+            o for o in outputs if o['msg_type'] == 'stream')['content']['text'].split())
+        images = [o for o in outputs if 'image/png' in o['content'].get('data', {})]
+        assert len(images) == 1  # the returned Figure, shown once
+        launched = [p.pid for p in group_members(launch_pid)]
+        assert len(launched) >= 3
+        os.kill(kernel_pid, signal.SIGKILL)  # the kernel dies without cleanup
+        survivors = _wait_until_gone(launched, timeout=30)
+        if survivors:
+            stop_group(launch_pid)
+        assert survivors == []
+    finally:
+        client.stop_channels()
+        manager.shutdown_kernel(now=True)
