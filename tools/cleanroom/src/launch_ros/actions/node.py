@@ -66,7 +66,6 @@ class Node(ExecuteProcess):
                                  else normalize_to_list_of_substitutions(namespace))
         self.__parameters = [] if parameters is None else normalize_parameters(parameters)
         self.__remappings = [] if remappings is None else normalize_remap_rules(remappings)
-        self.__arguments = arguments
         self.__ros_arguments = ros_arguments
         self.__expanded_node_name = self.UNSPECIFIED_NODE_NAME
         self.__expanded_node_namespace = self.UNSPECIFIED_NODE_NAMESPACE
