@@ -22,7 +22,7 @@ def usage() -> str:
     lines = ['usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...', '',
              'ros2 is an extensible command-line tool for ROS 2.', '',
              'Commands:']
-    lines += ['  %-9s %s' % (name, text) for name, text in sorted(VERBS.items())]
+    lines += [f'  {name:<9} {text}' for name, text in sorted(VERBS.items())]
     lines += ['', '  Call `ros2 <command> -h` for more detailed usage.']
     return '\n'.join(lines)
 
@@ -35,9 +35,9 @@ def main(argv: list[str] | None = None) -> int:
     verb, rest = argv[0], argv[1:]
     if verb not in VERBS:
         print(usage().splitlines()[0], file=sys.stderr)
+        choices = ', '.join(f"'{v}'" for v in sorted(VERBS))
         print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
-              "invalid choice: '%s' (choose from %s)"
-              % (verb, ', '.join("'%s'" % v for v in sorted(VERBS))), file=sys.stderr)
+              f"invalid choice: '{verb}' (choose from {choices})", file=sys.stderr)
         return 2
     module = importlib.import_module('ros2_cleanroom.verbs.' + verb)
     return module.main(rest)
