@@ -28,6 +28,7 @@ class ROSAdapter:
         self.__executor: Any = None
         self.__thread: Optional[threading.Thread] = None
         self.__stop = threading.Event()
+        self.__workers: list[threading.Thread] = []
         if autostart:
             self.start()
 
@@ -75,12 +76,25 @@ class ROSAdapter:
         """Set once shutdown began; worker threads waiting on ROS should give up."""
         return self.__stop
 
+    def start_worker(self, target: Any, name: str) -> threading.Thread:
+        """Run `target` on a thread that shutdown() waits for before destroying the node.
+
+        Workers use the node's clients, so they must end first; they watch
+        `stopped` to know when.
+        """
+        thread = threading.Thread(target=target, name=name, daemon=True)
+        self.__workers.append(thread)
+        thread.start()
+        return thread
+
     def shutdown(self) -> None:
-        """Stop the spin thread, destroy the node and shut the rclpy context down."""
+        """Stop workers and the spin thread, destroy the node, shut the context down."""
         if self.__thread is None or self.__stop.is_set():
             self.__stop.set()
             return
         self.__stop.set()
+        for worker in self.__workers:
+            worker.join(timeout=5.0)
         self.__thread.join(timeout=5.0)
         self.__executor.shutdown(timeout_sec=1.0)
         self.__ros_node.destroy_node()

@@ -1,4 +1,6 @@
 """LifecycleNode driven to 'active' by ChangeState / OnStateTransition, checked with get_state."""
+import threading
+
 import lifecycle_msgs.msg
 import lifecycle_msgs.srv
 import pytest
@@ -75,6 +77,8 @@ def test_change_state_events_drive_node_to_active(test_package, run_launch):
     assert seen == [('unconfigured', 'configuring'), ('configuring', 'inactive'),
                     ('inactive', 'activating'), ('activating', 'active')]
     assert node.node_name == '/lr/lc_talker'
+    assert not [t.name for t in threading.enumerate()
+                if t.name == 'launch_ros_adapter' or t.name.startswith('lifecycle ')]
     assert record.node_cmd('lc_talker')[1:] == [
         '--ros-args', '-r', '__node:=lc_talker', '-r', '__ns:=/lr']
 

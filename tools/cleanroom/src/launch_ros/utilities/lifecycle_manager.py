@@ -62,7 +62,7 @@ class LifecycleManager:
                                  f'{name}/transition_event', self._on_transition_event, 10)
         self.__context.register_event_handler(
             _CallbackHandler(ChangeState, self._on_change_state))
-        threading.Thread(target=self._work, name=f'lifecycle {name}', daemon=True).start()
+        self.__adapter.start_worker(self._work, f'lifecycle {name}')
 
     def _on_transition_event(self, msg: Any) -> None:
         # emit_event_sync is thread-safe: it wakes the launch loop from this
