@@ -168,14 +168,14 @@ class Background:
              ) -> int:
         """Stop the command and everything it started, like Ctrl-C in a terminal.
 
-        Sends SIGINT to the command, then SIGTERM and SIGKILL to its whole
+        Sends SIGINT, then SIGTERM, then SIGKILL to the command's whole
         process group, each after a grace period; whatever the command
         started and left behind is then stopped too.  Returns the command's
         exit code; calling it again just returns the exit code.
 
-        The first SIGINT goes to the command alone: `ros2 launch` and
-        `ros2 run` pass it on to their nodes, and a node that got it twice
-        (from us and from the launch) could die with a traceback mid-shutdown.
+        SIGINT goes to the whole group because that is what Ctrl-C in a
+        terminal does, and what `ros2 launch` and `ros2 run` expect: in Jazzy
+        neither passes SIGINT on to its nodes (they got it from the terminal).
         """
         if not self._stopped:
             self._stopped = True
@@ -184,10 +184,7 @@ class Background:
             for sig, grace in steps:
                 if self.poll() is not None:
                     break
-                if sig == signal.SIGINT:
-                    self._process.send_signal(sig)
-                else:
-                    _signal_group(self.pid, sig)
+                _signal_group(self.pid, sig)
                 try:
                     self._process.wait(timeout=grace)
                 except subprocess.TimeoutExpired:
