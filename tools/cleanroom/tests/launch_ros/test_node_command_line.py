@@ -90,3 +90,23 @@ def test_condition_skips_node(test_package, run_launch):
         Node(package=PKG, executable='noop', name='kept', condition=IfCondition('true')),
     ])
     assert [p['cmd'][3] for p in record.processes] == ['__node:=kept']
+
+
+def test_execute_process_keywords_pass_through(test_package, run_launch):
+    from launch.actions import EmitEvent, OpaqueFunction
+    from launch.events import Shutdown
+
+    exits = []
+
+    def count(context):
+        exits.append(context.locals.event.returncode)
+        return [EmitEvent(event=Shutdown(reason='seen two runs'))] if len(exits) == 2 else None
+
+    record = run_launch([
+        Node(package=PKG, executable='noop', name='again', respawn=True, respawn_delay=0.0,
+             output='screen', on_exit=[OpaqueFunction(function=count)]),
+    ])
+    assert exits[:2] == [0, 0]
+    assert len(record.processes) >= 2  # a third run may start before the shutdown lands
+    assert {p['name'] for p in record.processes} == {'noop-1'}
+    assert all(p['cmd'] == record.processes[0]['cmd'] for p in record.processes)
