@@ -9,19 +9,25 @@ from __future__ import annotations
 
 import argparse
 import os
-import subprocess
 import sys
 
 from . import paths
 
 
-def _env() -> dict[str, str]:
-    return dict(os.environ, NO_MKDOCS_2_WARNING="1")
+def _exec(*args: str) -> int:
+    """Become ``python -m <args>`` in the repository root.
+
+    Replacing this process (instead of starting a child) lets Ctrl+C and
+    SIGTERM reach mkdocs or pytest directly, and passes their exit code on.
+    """
+    os.chdir(paths.ROOT)
+    env = dict(os.environ, NO_MKDOCS_2_WARNING="1")
+    os.execve(sys.executable, [sys.executable, "-m", *args], env)
+    return 1  # not reached
 
 
 def _mkdocs(*args: str) -> int:
-    command = [sys.executable, "-m", "mkdocs", *args, "-f", str(paths.MKDOCS_YML)]
-    return subprocess.call(command, cwd=paths.ROOT, env=_env())
+    return _exec("mkdocs", *args, "-f", str(paths.MKDOCS_YML))
 
 
 def build(_: argparse.Namespace) -> int:
@@ -34,9 +40,8 @@ def serve(options: argparse.Namespace) -> int:
 
 
 def test(options: argparse.Namespace) -> int:
-    command = [sys.executable, "-m", "pytest", "-p", "textbook.pytest_plugin",
-               "-n", str(options.workers), *options.pytest_args]
-    return subprocess.call(command, cwd=paths.ROOT, env=_env())
+    return _exec("pytest", "-p", "textbook.pytest_plugin", "-n", str(options.workers),
+                 *options.pytest_args)
 
 
 def check(_: argparse.Namespace) -> int:
