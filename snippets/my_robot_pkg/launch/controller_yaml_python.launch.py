@@ -1,4 +1,6 @@
-"""The same as controller_config.launch.py, with the path computed in plain Python.
+"""controller_yaml.launch.py with the path worked out in plain Python.
+
+    ros2 launch my_robot_pkg controller_yaml_python.launch.py
 
 get_package_share_directory() runs at once, while generate_launch_description()
 builds the description, and returns an ordinary string.
@@ -22,7 +24,8 @@ def generate_launch_description():
         Node(
             package='my_robot_pkg',
             executable='robot_controller',
-            parameters=[params_file],
+            name='robot_controller',
             output='screen',
+            parameters=[params_file],
         ),
     ])
