@@ -5,10 +5,13 @@ import asyncio
 import collections
 import os
 import threading
-from typing import Any, Dict, Iterable, List, Optional
+from concurrent.futures import ThreadPoolExecutor
+from typing import Any, Callable, Dict, Iterable, List, Optional
 
 from .event import Event
 from .event_handler import BaseEventHandler
+
+_SPAWNER_THREADS = 4
 
 
 class _Locals:
@@ -57,6 +60,7 @@ class LaunchContext:
         self.__environment: Dict[str, str] = dict(self.__initial_environment)
         self.__is_shutdown = False
         self.__process_count = 0
+        self.__spawner: Optional[ThreadPoolExecutor] = None
 
     # --- plain properties -------------------------------------------------
     @property
@@ -88,6 +92,24 @@ class LaunchContext:
         self.__wakeup = asyncio.Event() if loop is not None else None
         if self.__events and self.__wakeup is not None:
             self.__wakeup.set()
+
+    def _run_in_spawner(self, function: Callable[[], Any]) -> asyncio.Future:
+        """Run `function` (a process start) on one of the launch's spawner threads.
+
+        Starting processes from a few threads lets their fork/exec overlap; the
+        threads live until the LaunchService ends because a child's death
+        signal (PR_SET_PDEATHSIG) fires when the thread that started it ends.
+        """
+        assert self.__loop is not None, 'processes can only be started by a running launch'
+        if self.__spawner is None:
+            self.__spawner = ThreadPoolExecutor(max_workers=_SPAWNER_THREADS,
+                                                thread_name_prefix='launch-spawner')
+        return self.__loop.run_in_executor(self.__spawner, function)
+
+    def _close_spawner(self) -> None:
+        if self.__spawner is not None:
+            self.__spawner.shutdown(wait=True)
+            self.__spawner = None
 
     def _allocate_process_number(self) -> int:
         """Next N of the `name-N` process names: counts every process of this launch."""

@@ -112,6 +112,7 @@ class LaunchService:
         finally:
             for signum in installed:
                 loop.remove_signal_handler(signum)
+            self.__context._close_spawner()
             self.__context._set_asyncio_loop(None)
             self.__running = False
         return self.__return_code

@@ -68,8 +68,13 @@ class LaunchResult:
 
     @property
     def names(self) -> list[str]:
-        """Process names in start order."""
-        return [p['name'] for p in self.started]
+        """Process names, sorted by their number N (processes start concurrently)."""
+        return sorted((p['name'] for p in self.started),
+                      key=lambda name: int(name.rsplit('-', 1)[1]))
+
+    def process(self, name: str) -> dict[str, Any]:
+        """The (first) started process called `name`."""
+        return next(p for p in self.started if p['name'] == name)
 
     def user_lines(self) -> list[str]:
         """The messages LogInfo printed."""

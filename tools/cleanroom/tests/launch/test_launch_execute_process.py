@@ -52,7 +52,7 @@ def test_shell_and_prefix(run_launch):
     assert '[sh-1] 3' in lines
     assert '[pre-2] prefixed hello' in lines
     assert '[matched-4] global matchme' in lines
-    assert result.started[2]['cmd'] == ['/bin/true']
+    assert result.process('skipped-3')['cmd'] == ['/bin/true']
 
 
 def test_output_modes_decide_what_reaches_the_screen(run_launch):

@@ -150,6 +150,7 @@ class ExecuteProcess(Action):
         self.__future: Optional[asyncio.Future] = None
         self.__events_handler: Optional[_ProcessEvents] = None
         self.__shutdown_requested = False
+        self.__stop_requested: Optional[bool] = None
         self.__timers: List[asyncio.TimerHandle] = []
         self.__respawn_handle: Optional[asyncio.TimerHandle] = None
         self.__respawn_count = 0
@@ -318,20 +319,28 @@ class ExecuteProcess(Action):
             self.__logger.info(f"process details: cmd='{' '.join(self.__final_cmd)}', "
                                f"cwd='{self.__final_cwd}', "
                                f'custom_env?={self.__env is not None}')
+        self.__process = None  # until spawned; a shutdown meanwhile is applied afterwards
         process = RunningProcess(
             context.asyncio_loop, self.__final_cmd, cwd=self.__final_cwd,
             env=self.__final_env, shell=self.__shell,
             emulate_tty=_flag(context, emulate_tty),
             on_output=self.__on_output, on_exit=self.__on_process_exit)
-        try:
-            process.start()
-        except OSError as exc:
-            self.__logger.error(f'exception occurred while executing process: {exc}')
+        spawning = context._run_in_spawner(process.spawn)
+        spawning.add_done_callback(lambda done: self.__on_spawned(context, process, done))
+
+    def __on_spawned(self, context: LaunchContext, process: RunningProcess,
+                     spawning: asyncio.Future) -> None:
+        error = spawning.exception()
+        if error is not None:
+            self.__logger.error(f'exception occurred while executing process: {error}')
             self.__complete()
             return
         self.__process = process
+        process.attach()
         self.__logger.info(f'process started with pid [{process.pid}]')
         context.emit_event_sync(ProcessStarted(**self.__event_fields()))
+        if self.__stop_requested is not None:  # shutdown came while the process was starting
+            self.__stop(context, self.__stop_requested)
 
     def __event_fields(self) -> Dict[str, object]:
         return {'action': self, 'name': self.__final_name, 'cmd': self.__final_cmd,
@@ -428,6 +437,14 @@ class ExecuteProcess(Action):
             self.__respawn_handle = None
             self.__complete()
             return
+        if self.__process is None:  # still starting: stop it once it has started
+            self.__stop_requested = send_sigint
+            return
+        self.__stop(context, send_sigint)
+
+    def __stop(self, context: LaunchContext, send_sigint: bool) -> None:
+        """SIGINT (unless the terminal sent it), then SIGTERM, then SIGKILL."""
+        self.__stop_requested = None
         if self.__process is None or not self.__process.running:
             return
         if send_sigint:

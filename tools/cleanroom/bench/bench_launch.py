@@ -1,0 +1,235 @@
+"""Benchmark the clean-room launch: start and stop N talker nodes.
+
+    .venv/bin/python tools/cleanroom/bench/bench_launch.py [--counts 1 10 30] [--repeat 3]
+
+For each N the script launches N rclpy talkers (launch_ros Node actions) and
+measures, from the moment LaunchService.run() is called:
+
+  started   every process has been started (its ProcessStarted event),
+  ready     every talker has created its publisher (it logs 'ready'),
+  shutdown  a Shutdown emitted once all are ready has stopped every process,
+            i.e. start to clean shutdown (each process must exit with code 0).
+
+It prints the median of --repeat runs next to the figures of real ROS 2
+Jazzy on a 2-core machine, and the ratio ours / reference (lower is better).
+
+The talker comes from a tiny ament_python package the script writes to a
+temporary folder and builds with colcon (the colcon next to this Python).
+Runs get a ROS domain from the lock-file allocator of CONTRIBUTING.md and
+LOCALHOST discovery, and a temporary ROS_LOG_DIR.
+"""
+from __future__ import annotations
+
+import argparse
+import fcntl
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Dict, List, Optional, Tuple
+
+# Jazzy on a 2-core machine: N -> (all started, start to clean shutdown), seconds.
+REFERENCE: Dict[int, Tuple[Optional[float], Optional[float]]] = {
+    10: (0.11, None),
+    30: (0.88, 3.6),
+}
+
+TALKER = '''
+import sys
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+def main():
+    rclpy.init(args=sys.argv)
+    node = Node('talker')
+    publisher = node.create_publisher(String, 'chatter', 10)
+    count = [0]
+
+    def tick():
+        count[0] += 1
+        publisher.publish(String(data='hello %d' % count[0]))
+
+    node.create_timer(0.1, tick)
+    try:  # Ctrl-C may come as soon as 'ready' is out
+        node.get_logger().info('ready')
+        rclpy.spin(node)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
+'''
+
+SETUP_PY = '''
+from setuptools import setup
+
+setup(
+    name='bench_pkg', version='0.0.1', packages=['bench_pkg'],
+    data_files=[('share/ament_index/resource_index/packages', ['resource/bench_pkg']),
+                ('share/bench_pkg', ['package.xml'])],
+    entry_points={'console_scripts': ['talker = bench_pkg.talker:main']},
+)
+'''
+
+PACKAGE_XML = '''<?xml version="1.0"?>
+<package format="3">
+  <name>bench_pkg</name>
+  <version>0.0.1</version>
+  <description>Talker for the launch benchmark</description>
+  <maintainer email="nobody@example.com">nobody</maintainer>
+  <license>Apache-2.0</license>
+  <exec_depend>rclpy</exec_depend>
+  <exec_depend>std_msgs</exec_depend>
+  <export><build_type>ament_python</build_type></export>
+</package>
+'''
+
+
+def lease_ros_domain() -> Tuple[int, int]:
+    """Lock a free ROS domain ID in 1-89 (CONTRIBUTING.md allocator); return (id, fd)."""
+    lock_dir = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
+    lock_dir.mkdir(parents=True, exist_ok=True)
+    for domain_id in range(1, 90):
+        fd = os.open(lock_dir / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
+        try:
+            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            os.close(fd)
+            continue
+        os.ftruncate(fd, 0)
+        os.write(fd, f'{os.getpid()}\n'.encode())
+        return domain_id, fd
+    sys.exit('no free ROS domain ID in 1-89')
+
+
+def build_talker_package(root: Path) -> Path:
+    """Write and colcon-build bench_pkg below `root`; return its install prefix."""
+    src = root / 'src' / 'bench_pkg'
+    (src / 'bench_pkg').mkdir(parents=True)
+    (src / 'resource').mkdir()
+    (src / 'resource' / 'bench_pkg').write_text('')
+    (src / 'bench_pkg' / '__init__.py').write_text('')
+    (src / 'bench_pkg' / 'talker.py').write_text(TALKER)
+    (src / 'setup.py').write_text(SETUP_PY)
+    (src / 'setup.cfg').write_text('[install]\ninstall_scripts=$base/lib/bench_pkg\n')
+    (src / 'package.xml').write_text(PACKAGE_XML)
+    colcon = shutil.which('colcon', path=os.path.dirname(sys.executable)) or 'colcon'
+    subprocess.run([colcon, 'build'], cwd=root, check=True, stdout=subprocess.DEVNULL,
+                   stderr=subprocess.DEVNULL, timeout=300)
+    return root / 'install' / 'bench_pkg'
+
+
+def use_prefix(prefix: Path) -> None:
+    """Make the package findable, as sourcing its setup.bash would."""
+    site = next(prefix.glob('lib/python3*/site-packages'))
+    for var, value in (('AMENT_PREFIX_PATH', prefix), ('PYTHONPATH', site)):
+        old = os.environ.get(var)
+        os.environ[var] = str(value) + (os.pathsep + old if old else '')
+
+
+def run_once(count: int) -> Dict[str, float]:
+    """Launch `count` talkers, shut down when all are ready; return the timings."""
+    import launch
+    import launch.logging
+    from launch.actions import RegisterEventHandler, Shutdown
+    from launch.event_handlers import OnProcessExit, OnProcessIO, OnProcessStart
+    from launch_ros.actions import Node
+
+    launch.logging.reset()
+    marks: Dict[str, float] = {}
+    started: List[int] = []
+    ready: set = set()
+    exit_codes: List[int] = []
+
+    def on_start(event: object, context: object) -> None:
+        started.append(event.pid)
+        if len(started) == count:
+            marks['started'] = time.monotonic()
+
+    def on_stderr(event: object) -> Optional[list]:
+        if b'ready' in event.text:
+            ready.add(event.pid)
+            if len(ready) == count and 'ready' not in marks:
+                marks['ready'] = time.monotonic()
+                return [Shutdown(reason='benchmark: all talkers ready')]
+        return None
+
+    nodes = [Node(package='bench_pkg', executable='talker', name=f'talker_{i}')
+             for i in range(count)]
+    service = launch.LaunchService()
+    service.include_launch_description(launch.LaunchDescription([
+        RegisterEventHandler(OnProcessStart(on_start=on_start)),
+        RegisterEventHandler(OnProcessIO(on_stderr=on_stderr)),
+        RegisterEventHandler(OnProcessExit(
+            on_exit=lambda event, context: exit_codes.append(event.returncode))),
+        *nodes,
+    ]))
+    t0 = time.monotonic()
+    code = service.run()
+    marks['shutdown'] = time.monotonic()
+    if code != 0 or len(exit_codes) != count or any(exit_codes) or len(ready) != count:
+        raise RuntimeError(f'N={count}: launch exit {code}, process exit codes {exit_codes}, '
+                           f'{len(ready)} ready')
+    return {key: value - t0 for key, value in marks.items()}
+
+
+def _ratio(ours: float, reference: Optional[float]) -> str:
+    return '-' if reference is None else f'{ours / reference:.2f}'
+
+
+def _ref(value: Optional[float]) -> str:
+    return '-' if value is None else f'{value:.2f}'
+
+
+def main() -> int:
+    """Run the benchmark and print the table."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument('--counts', type=int, nargs='+', default=[1, 10, 30])
+    parser.add_argument('--repeat', type=int, default=3)
+    opts = parser.parse_args()
+    domain_id, lock_fd = lease_ros_domain()
+    os.environ.update({'ROS_DOMAIN_ID': str(domain_id),
+                       'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
+                       'RCUTILS_COLORIZED_OUTPUT': '0'})
+    with tempfile.TemporaryDirectory(prefix='bench-launch-') as tmp:
+        os.environ['ROS_LOG_DIR'] = os.path.join(tmp, 'log')
+        print(f'building the talker package (domain {domain_id}) ...', file=sys.stderr)
+        use_prefix(build_talker_package(Path(tmp) / 'ws'))
+        results = {}
+        for count in opts.counts:
+            runs = []
+            for _ in range(opts.repeat):
+                saved = sys.stdout
+                sys.stdout = open(os.devnull, 'w')  # noqa: SIM115 - launch chatter hidden
+                try:
+                    runs.append(run_once(count))
+                finally:
+                    sys.stdout.close()
+                    sys.stdout = saved
+            results[count] = {key: statistics.median(r[key] for r in runs) for key in runs[0]}
+    os.close(lock_fd)
+    print(f'\nmedian of {opts.repeat} runs, seconds from LaunchService.run(); '
+          'reference: ROS 2 Jazzy, 2 cores')
+    header = (f"{'N':>4} | {'started':>8} {'ref':>6} {'ratio':>6} | {'ready':>6} | "
+              f"{'shutdown':>8} {'ref':>6} {'ratio':>6}")
+    print(header)
+    print('-' * len(header))
+    for count, timing in results.items():
+        ref_started, ref_shutdown = REFERENCE.get(count, (None, None))
+        print(f"{count:>4} | {timing['started']:>8.3f} {_ref(ref_started):>6} "
+              f"{_ratio(timing['started'], ref_started):>6} | {timing['ready']:>6.2f} | "
+              f"{timing['shutdown']:>8.2f} {_ref(ref_shutdown):>6} "
+              f"{_ratio(timing['shutdown'], ref_shutdown):>6}")
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
