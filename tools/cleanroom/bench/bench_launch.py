@@ -10,6 +10,10 @@ measures, from the moment LaunchService.run() is called:
   shutdown  a Shutdown emitted once all are ready has stopped every process,
             i.e. start to clean shutdown (each process must exit with code 0).
 
+It also reports the CPU time used by the launch process itself and by the
+talkers: on 2 cores the rclpy talkers' own start-up and tear-down (about
+0.3-0.5 s of CPU each) bound 'ready' and 'shutdown', not the launch.
+
 It prints the median of --repeat runs next to the figures of real ROS 2
 Jazzy on a 2-core machine, and the ratio ours / reference (lower is better).
 
@@ -23,6 +27,7 @@ from __future__ import annotations
 import argparse
 import fcntl
 import os
+import resource
 import shutil
 import statistics
 import subprocess
@@ -172,13 +177,22 @@ def run_once(count: int) -> Dict[str, float]:
             on_exit=lambda event, context: exit_codes.append(event.returncode))),
         *nodes,
     ]))
+    cpu_self = _cpu(resource.RUSAGE_SELF)
+    cpu_children = _cpu(resource.RUSAGE_CHILDREN)
     t0 = time.monotonic()
     code = service.run()
     marks['shutdown'] = time.monotonic()
+    cpu = {'launch_cpu': _cpu(resource.RUSAGE_SELF) - cpu_self,
+           'nodes_cpu': _cpu(resource.RUSAGE_CHILDREN) - cpu_children}
     if code != 0 or len(exit_codes) != count or any(exit_codes) or len(ready) != count:
         raise RuntimeError(f'N={count}: launch exit {code}, process exit codes {exit_codes}, '
                            f'{len(ready)} ready')
-    return {key: value - t0 for key, value in marks.items()}
+    return {**{key: value - t0 for key, value in marks.items()}, **cpu}
+
+
+def _cpu(who: int) -> float:
+    usage = resource.getrusage(who)
+    return usage.ru_utime + usage.ru_stime
 
 
 def _ratio(ours: float, reference: Optional[float]) -> str:
@@ -219,7 +233,7 @@ def main() -> int:
     print(f'\nmedian of {opts.repeat} runs, seconds from LaunchService.run(); '
           'reference: ROS 2 Jazzy, 2 cores')
     header = (f"{'N':>4} | {'started':>8} {'ref':>6} {'ratio':>6} | {'ready':>6} | "
-              f"{'shutdown':>8} {'ref':>6} {'ratio':>6}")
+              f"{'shutdown':>8} {'ref':>6} {'ratio':>6} | {'launch cpu':>10} {'nodes cpu':>9}")
     print(header)
     print('-' * len(header))
     for count, timing in results.items():
@@ -227,7 +241,8 @@ def main() -> int:
         print(f"{count:>4} | {timing['started']:>8.3f} {_ref(ref_started):>6} "
               f"{_ratio(timing['started'], ref_started):>6} | {timing['ready']:>6.2f} | "
               f"{timing['shutdown']:>8.2f} {_ref(ref_shutdown):>6} "
-              f"{_ratio(timing['shutdown'], ref_shutdown):>6}")
+              f"{_ratio(timing['shutdown'], ref_shutdown):>6} | "
+              f"{timing['launch_cpu']:>10.2f} {timing['nodes_cpu']:>9.2f}")
     return 0
 
 
