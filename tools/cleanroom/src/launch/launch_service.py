@@ -3,9 +3,7 @@ from __future__ import annotations
 
 import asyncio
 import logging
-import os
 import signal
-import sys
 import threading
 import traceback
 from typing import Iterable, List, Optional, Set
@@ -16,14 +14,6 @@ from .events import IncludeLaunchDescription, Shutdown
 from .launch_context import LaunchContext
 from .launch_description import LaunchDescription
 from .launch_description_entity import LaunchDescriptionEntity
-
-
-def _terminal_sends_sigint_to_children() -> bool:
-    """True when Ctrl-C on our terminal also reached our children (same foreground group)."""
-    try:
-        return os.tcgetpgrp(sys.stdin.fileno()) == os.getpgrp()
-    except (OSError, ValueError, AttributeError):
-        return False
 
 
 def parse_launch_arguments(argv: Iterable[str]) -> List[tuple]:
@@ -200,8 +190,9 @@ class LaunchService:
             self.__logger.warning('user interrupted with ctrl-c (SIGINT) again, ignoring...')
             return
         self.__logger.warning('user interrupted with ctrl-c (SIGINT)')
-        self.__context.emit_event_sync(Shutdown(
-            reason='ctrl-c (SIGINT)', due_to_sigint=_terminal_sends_sigint_to_children()))
+        # As in Jazzy: a terminal's Ctrl-C reached every process of the group already,
+        # so processes only get SIGINT from us when the launch is `noninteractive`.
+        self.__context.emit_event_sync(Shutdown(reason='ctrl-c (SIGINT)', due_to_sigint=True))
 
     def __on_sigterm(self) -> None:
         self.__sigterm_count += 1

@@ -1,10 +1,12 @@
 """`ros2 launch` and `ros2 run` against a package laid out like a colcon install."""
 from __future__ import annotations
 
+import os
 import signal
 import subprocess
 import time
 
+import psutil
 from conftest import ROS2
 
 SHOW_ARGS = """Arguments (pass arguments as '<name>:=<value>'):
@@ -111,11 +113,41 @@ def test_run_errors_and_exit_codes(ros2):
     assert (no_pkg.returncode, no_pkg.stderr) == (1, "Package 'no_pkg' not found\n")
 
 
-def test_run_forwards_sigint(cli_env):
-    proc = subprocess.Popen([ROS2, 'run', 'cr_pkg', 'wait_for_signal'], env=cli_env,
-                            stdout=subprocess.PIPE, text=True, stdin=subprocess.DEVNULL)
-    assert proc.stdout.readline() == 'ready\n'
-    time.sleep(0.1)
-    proc.send_signal(signal.SIGINT)
-    out, _ = proc.communicate(timeout=10)
+def _start_in_own_group(cli_env: dict, *args: str) -> subprocess.Popen:
+    """Start `ros2 ARGS` as a terminal would run it: its own process group."""
+    return subprocess.Popen([ROS2, *args], env=cli_env, stdout=subprocess.PIPE, text=True,
+                            stdin=subprocess.DEVNULL, start_new_session=True)
+
+
+def test_run_waits_for_the_child_after_ctrl_c(cli_env):
+    """Ctrl-C goes to the whole group; ros2 run itself must not die or forward it."""
+    proc = _start_in_own_group(cli_env, 'run', 'cr_pkg', 'wait_for_signal')
+    try:
+        assert proc.stdout.readline() == 'ready\n'
+        time.sleep(0.1)
+        os.killpg(proc.pid, signal.SIGINT)
+        out, _ = proc.communicate(timeout=10)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
     assert (proc.returncode, out) == (0, 'got INT\n')
+
+
+def test_run_does_not_forward_sigint_to_the_child(cli_env):
+    proc = _start_in_own_group(cli_env, 'run', 'cr_pkg', 'wait_for_signal')
+    try:
+        assert proc.stdout.readline() == 'ready\n'
+        child = psutil.Process(proc.pid).children()[0]
+        proc.send_signal(signal.SIGINT)  # to ros2 run only
+        time.sleep(0.3)
+        assert proc.poll() is None and child.is_running()
+        proc.kill()  # a killed ros2 run takes its child along (death signal SIGTERM)
+        out, _ = proc.communicate(timeout=10)
+        _gone, alive = psutil.wait_procs([child], timeout=5)
+        assert not alive
+        assert out == 'got TERM\n'
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()

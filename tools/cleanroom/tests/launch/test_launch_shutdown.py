@@ -66,7 +66,8 @@ def start_launch(cli_env: dict) -> Iterator[Callable[..., subprocess.Popen]]:
 
     def start(*args: str) -> subprocess.Popen:
         proc = subprocess.Popen([ROS2, 'launch', *args], env=cli_env, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL)
+                                stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL,
+                                start_new_session=True)  # its own group, as in a terminal
         started.append(proc)
         _wait_for_starts(proc, 4)
         return proc
@@ -74,7 +75,7 @@ def start_launch(cli_env: dict) -> Iterator[Callable[..., subprocess.Popen]]:
     yield start
     for proc in started:
         if proc.poll() is None:
-            proc.kill()
+            os.killpg(proc.pid, signal.SIGKILL)
         proc.communicate()
 
 
@@ -92,15 +93,42 @@ def _children(proc: subprocess.Popen) -> list[psutil.Process]:
     return psutil.Process(proc.pid).children(recursive=True)
 
 
-def test_sigint_to_ros2_launch_stops_all_children(start_launch):
+def test_ctrl_c_stops_all_children(start_launch):
+    """Ctrl-C in a terminal: SIGINT to the whole group; the launch does not send it again."""
     proc = start_launch('cr_pkg', 'procs.launch.py')
     children = _children(proc)
     assert len(children) >= 3  # the sleepers; 'hello' may already have exited
-    proc.send_signal(signal.SIGINT)
+    os.killpg(proc.pid, signal.SIGINT)
     out, _ = proc.communicate(timeout=20)
     assert proc.returncode == 0
     assert '[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)' in out
-    assert "sending signal 'SIGINT' to process[sleeper-1]" in out
+    assert "sending signal 'SIGINT'" not in out
+    assert '[ERROR] [sleeper-1]: process has died [pid' in out and 'exit code -2' in out
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
+
+
+def test_sigint_to_the_launch_only_escalates_to_sigterm(start_launch):
+    """Interactive launch, SIGINT to it alone: children get SIGTERM after sigterm_timeout."""
+    proc = start_launch('cr_pkg', 'procs.launch.py', 'sigterm_timeout:=0.3')
+    children = _children(proc)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=20)
+    assert proc.returncode == 0
+    assert ("[ERROR] [sleeper-1]: process[sleeper-1] failed to terminate '0.3' seconds after "
+            "receiving 'SIGINT', escalating to 'SIGTERM'") in out
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
+
+
+def test_sigint_to_a_noninteractive_launch_is_sent_on(start_launch):
+    proc = start_launch('--noninteractive', 'cr_pkg', 'procs.launch.py')
+    children = _children(proc)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=20)
+    assert proc.returncode == 0
+    assert "sending signal 'SIGINT' to process[sleeper-2]" in out
+    assert 'escalating' not in out
     _gone, alive = psutil.wait_procs(children, timeout=5)
     assert not alive
 
@@ -123,3 +151,12 @@ def test_killed_launch_takes_its_children_along(start_launch):
     proc.communicate(timeout=20)
     _gone, alive = psutil.wait_procs(children, timeout=5)
     assert not alive
+
+
+def test_shutdown_while_processes_are_still_starting(run_launch):
+    """A Shutdown queued with the processes reaches them once they have started."""
+    result = run_launch([ExecuteProcess(cmd=['sleep', '20'], name=f's{i}') for i in range(5)]
+                        + [Shutdown(reason='at once')])
+    assert sorted(result.names) == [f's{i}-{i + 1}' for i in range(5)]
+    assert result.output.count("sending signal 'SIGINT'") == 5
+    assert 'escalating' not in result.output

@@ -2,7 +2,7 @@
 
 The executable is looked up in `<prefix>/lib/<pkg>/` of the package's install
 prefix (found through the ament index, i.e. AMENT_PREFIX_PATH) and run in the
-foreground.  Messages and exit codes follow ROS 2 Jazzy: a child that fails
+foreground.  Messages, exit codes and signal handling follow ROS 2 Jazzy: a child that fails
 makes us print `[ros2run]: Process exited with failure N` and exit with N.
 
 This module deliberately imports nothing of `launch`: `ros2 run` is started a
@@ -22,10 +22,10 @@ _PR_SET_PDEATHSIG = 1
 
 
 def _die_with_parent(parent_pid: int) -> None:
-    """Runs in the child before exec: die if `ros2 run` dies, so nothing is orphaned."""
+    """Runs in the child before exec: SIGTERM it if `ros2 run` dies, so nothing is orphaned."""
     try:
         libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
+        libc.prctl(_PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0)
     except (OSError, AttributeError):
         return
     if os.getppid() != parent_pid:  # the parent died before prctl took effect
@@ -60,37 +60,20 @@ def _parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _terminal_delivers_sigint() -> bool:
-    """True when Ctrl-C on our terminal already reaches the child (same foreground group)."""
-    try:
-        return os.tcgetpgrp(sys.stdin.fileno()) == os.getpgrp()
-    except (OSError, ValueError, AttributeError):
-        return False
-
-
 def run_executable(cmd: list[str]) -> int:
-    """Run `cmd` in the foreground, forwarding SIGINT/SIGTERM, and return its exit code."""
+    """Run `cmd` in the foreground and return its exit code.
+
+    As Jazzy's ros2run: signals are not forwarded.  Ctrl-C in a terminal
+    reaches the child directly (same process group), so a KeyboardInterrupt
+    here is swallowed and we keep waiting for the child to finish.
+    """
     parent = os.getpid()
     process = subprocess.Popen(cmd, preexec_fn=lambda: _die_with_parent(parent))
-
-    def forward(signum: int, _frame: object) -> None:
-        if signum == signal.SIGINT and _terminal_delivers_sigint():
-            return  # the terminal sent it to the child as well; do not send it twice
+    while True:
         try:
-            process.send_signal(signum)
-        except ProcessLookupError:
-            pass
-
-    previous = {s: signal.signal(s, forward) for s in (signal.SIGINT, signal.SIGTERM)}
-    try:
-        while True:
-            try:
-                return process.wait()
-            except InterruptedError:
-                continue
-    finally:
-        for signum, handler in previous.items():
-            signal.signal(signum, handler)
+            return process.wait()
+        except KeyboardInterrupt:
+            continue
 
 
 def main(argv: list[str]) -> int:
