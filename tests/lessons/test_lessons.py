@@ -15,6 +15,7 @@ def test_there_are_lessons():
 
 
 @pytest.mark.timeout(900)
+@pytest.mark.xdist_group("lessons")  # before tests/site, in the same worker
 @pytest.mark.parametrize("path", LESSONS, ids=lambda p: str(p.relative_to(p.parents[2])))
 def test_lesson_executes(path):
     notebook = execute.refresh(load(path))

@@ -40,8 +40,10 @@ def serve(options: argparse.Namespace) -> int:
 
 
 def test(options: argparse.Namespace) -> int:
+    # loadgroup: tests marked xdist_group("lessons") run in one worker, in order,
+    # so the site build finds the lessons the lesson tests just executed.
     return _exec("pytest", "-p", "textbook.pytest_plugin", "-n", str(options.workers),
-                 *options.pytest_args)
+                 "--dist", "loadgroup", *options.pytest_args)
 
 
 def check(_: argparse.Namespace) -> int:

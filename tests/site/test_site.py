@@ -1,0 +1,63 @@
+"""`mkdocs build --strict` succeeds and the pages show executed output."""
+from __future__ import annotations
+
+import html
+import os
+import subprocess
+import sys
+
+import nbformat
+import pytest
+from bs4 import BeautifulSoup
+
+from textbook import paths
+
+# After tests/lessons in the same worker: the build then reuses their results.
+pytestmark = pytest.mark.xdist_group("lessons")
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory):
+    site_dir = tmp_path_factory.mktemp("site")
+    result = subprocess.run(
+        [sys.executable, "-m", "mkdocs", "build", "--strict", "-f", str(paths.MKDOCS_YML),
+         "-d", str(site_dir)],
+        cwd=paths.ROOT, env=dict(os.environ, NO_MKDOCS_2_WARNING="1"),
+        capture_output=True, text=True, timeout=1800)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "WARNING" not in result.stderr, result.stderr
+    return site_dir
+
+
+def page_text(site, page: str) -> str:
+    return html.unescape(BeautifulSoup((site / page).read_text(), "html.parser").get_text())
+
+
+@pytest.mark.timeout(1800)
+def test_pilot_page_shows_its_executed_output(site):
+    text = page_text(site, "ch06/L1/00_setup_check/index.html")
+    assert "[sensor_publisher]: Reading #" in text
+    assert "[data_processor]: Received " in text
+    assert "sensor_publisher exited with code 0" in text
+    assert "Summary: 1 package finished" in text or "Summary: " in text
+
+
+@pytest.mark.timeout(1800)
+def test_pilot_page_has_titled_snippets_and_a_download(site):
+    page = BeautifulSoup((site / "ch06/L1/00_setup_check/index.html").read_text(),
+                         "html.parser")
+    titles = [span.text for span in page.select("div.highlight > span.filename")]
+    assert "snippets/my_robot_pkg/setup.py" in titles
+    assert page.select_one('a[title="Download the executed notebook"]') is not None
+    notebook = nbformat.read(site / "ch06/L1/00_setup_check/00_setup_check.ipynb", as_version=4)
+    outputs = "".join(out.get("text", "") for cell in notebook.cells
+                      for out in cell.get("outputs", []))
+    assert "[data_processor]: Received " in outputs
+
+
+@pytest.mark.timeout(1800)
+def test_navigation_is_chapter_layer_lesson(site):
+    text = page_text(site, "index.html")
+    for label in ("Chapter 6 · Building Robot Systems", "L1 · Manual Foundation",
+                  "Set up and check your environment"):
+        assert label in text
