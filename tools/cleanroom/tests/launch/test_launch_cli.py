@@ -4,10 +4,13 @@ from __future__ import annotations
 import os
 import signal
 import subprocess
+import sys
 import time
+from pathlib import Path
 
 import psutil
-from conftest import ROS2
+
+ROS2 = str(Path(sys.executable).parent / 'ros2')  # the ros2 of this environment
 
 SHOW_ARGS = """Arguments (pass arguments as '<name>:=<value>'):
 

@@ -144,6 +144,7 @@ def test_children_get_the_death_signal():
         ' emulate_tty=False, on_output=lambda *a: None, on_exit=lambda c: None)\n'
         'p.start()\n'
         'print(p.pid, flush=True)\n'
+        'import time; time.sleep(0.3)\n'
         'os._exit(0)  # no cleanup at all, as if the launch crashed\n')
     out = subprocess.run([PY, '-c', code], capture_output=True, text=True, timeout=30)
     child = psutil.Process(int(out.stdout.split()[0]))

@@ -7,12 +7,14 @@ import subprocess
 import sys
 import time
 from collections.abc import Callable, Iterator
+from pathlib import Path
 
 import psutil
 import pytest
-from conftest import ROS2
 from launch.actions import ExecuteProcess, RegisterEventHandler, Shutdown
 from launch.event_handlers import OnProcessIO
+
+ROS2 = str(Path(sys.executable).parent / 'ros2')  # the ros2 of this environment
 
 IGNORE_INT_AND_TERM = ('import signal, time; signal.signal(signal.SIGINT, signal.SIG_IGN); '
                        'signal.signal(signal.SIGTERM, signal.SIG_IGN); '

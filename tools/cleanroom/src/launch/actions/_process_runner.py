@@ -11,7 +11,9 @@ command through util-linux `setpriv --pdeathsig KILL` when that exists: a
 Python `preexec_fn` would force subprocess to fork (instead of vfork) and
 run Python code in every child before exec, which costs several
 milliseconds per start once the started processes compete for the CPU.
-Without setpriv, a ctypes prctl() in preexec_fn does the same job.
+Without setpriv, a ctypes prctl() in preexec_fn does the same job.  (setpriv
+cannot notice a parent that died in the ~millisecond before its prctl; the
+launch dying right then is the one case a child could survive.)
 """
 from __future__ import annotations
 
