@@ -64,16 +64,17 @@ def run_executable(cmd: list[str]) -> int:
     """Run `cmd` in the foreground and return its exit code.
 
     As Jazzy's ros2run: signals are not forwarded.  Ctrl-C in a terminal
-    reaches the child directly (same process group), so a KeyboardInterrupt
-    here is swallowed and we keep waiting for the child to finish.
+    reaches the child directly (same process group), so SIGINT is ignored
+    here (a no-op handler: the child, after exec, gets the default one) and
+    we keep waiting for the child to finish.
     """
     parent = os.getpid()
-    process = subprocess.Popen(cmd, preexec_fn=lambda: _die_with_parent(parent))
-    while True:
-        try:
-            return process.wait()
-        except KeyboardInterrupt:
-            continue
+    previous = signal.signal(signal.SIGINT, lambda _signum, _frame: None)
+    try:
+        process = subprocess.Popen(cmd, preexec_fn=lambda: _die_with_parent(parent))
+        return process.wait()
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def main(argv: list[str]) -> int:
