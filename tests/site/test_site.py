@@ -9,7 +9,6 @@ import sys
 import nbformat
 import pytest
 from bs4 import BeautifulSoup
-
 from textbook import paths
 
 # After tests/lessons in the same worker: the build then reuses their results.

@@ -43,15 +43,31 @@ def test_snippet_title_moves_into_the_code_block():
     assert soup.select("div.snippet-title") == []
 
 
+def code_cell(text, tag=""):
+    """A code cell as mkdocs-jupyter renders it: a tagged wrapper around a tagged cell."""
+    tag = f" celltag_{tag}" if tag else ""
+    return (f'<div class="jp-Cell jp-CodeCell{tag}"><div class="jp-Cell jp-CodeCell{tag}">'
+            f'<pre>{text}</pre></div></div>')
+
+
+def markdown_cell(text, tag=""):
+    """A markdown cell: the tag sits on the rendered markdown inside the cell."""
+    tag = f" celltag_{tag}" if tag else ""
+    return (f'<div class="jp-Cell jp-MarkdownCell"><div class="jp-InputArea">'
+            f'<div class="jp-RenderedMarkdown{tag}"><p>{text}</p></div></div></div>')
+
+
 def test_consecutive_solution_cells_fold_into_one_closed_details():
-    html = ('<div class="jp-Cell">task</div>'
-            '<div class="jp-Cell celltag_solution">answer 1</div>'
-            '<div class="jp-Cell celltag_solution">answer 2</div>'
-            '<div class="jp-Cell">next</div>'
-            '<div class="jp-Cell celltag_hint">a hint</div>')
+    html = ('<div class="jp-Notebook">' + markdown_cell("task") +
+            markdown_cell("explained", "solution") + code_cell("answer", "solution") +
+            code_cell("next") + code_cell("a hint", "hint") + "</div>")
     soup = BeautifulSoup(finish_lesson_html(html), "html.parser")
     folded = soup.select("details")
     assert [d.summary.text for d in folded] == ["Solution", "Hint"]
     assert not any(d.has_attr("open") for d in folded)
-    assert [c.text for c in folded[0].select("div.jp-Cell")] == ["answer 1", "answer 2"]
-    assert [c.text for c in soup.find_all("div", recursive=False)] == ["task", "next"]
+    assert [c.get_text() for c in folded[0].find_all("div", class_="jp-Cell", recursive=False)] \
+        == ["explained", "answer"]
+    notebook = soup.select_one("div.jp-Notebook")
+    assert [c.name for c in notebook.find_all(recursive=False)] == \
+        ["div", "details", "div", "details"]
+    assert not soup.select("details details"), "folds must not nest"

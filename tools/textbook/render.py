@@ -23,27 +23,42 @@ def title_snippets(html: str) -> str:
                                 f'{m.group("title")}</span>', html)
 
 
+def _fold_tag(cell, tags=FOLDED_TAGS) -> str | None:
+    """The folding tag of a rendered cell: nbconvert puts ``celltag_<tag>`` on the
+    cell's div (code cells) or on the rendered markdown inside it."""
+    for tag in tags:
+        marker = f"celltag_{tag}"
+        if marker in (cell.get("class") or []) or cell.select_one(f".{marker}") is not None:
+            return tag
+    return None
+
+
 def fold_tagged_cells(html: str) -> str:
     """Wrap each run of consecutive cells tagged solution/hint in a closed <details>."""
-    if not any(f"celltag_{tag}" in html for tag in FOLDED_TAGS):
+    if "celltag_" not in html:
         return html
     soup = BeautifulSoup(html, "html.parser")
-    for tag, (label, kind) in FOLDED_TAGS.items():
-        for cell in soup.select(f"div.celltag_{tag}"):
-            if cell.parent is not None and cell.parent.name == "details":
-                continue  # already folded with the cell before it
-            details = soup.new_tag("details", attrs={"class": f"{kind} textbook-{tag}"})
-            summary = soup.new_tag("summary")
-            summary.string = label
-            details.append(summary)
-            cell.insert_before(details)
-            run = [cell]
-            sibling = cell.find_next_sibling()
-            while sibling is not None and f"celltag_{tag}" in (sibling.get("class") or []):
-                run.append(sibling)
-                sibling = sibling.find_next_sibling()
-            for member in run:
-                details.append(member.extract())
+    cells = [cell for cell in soup.select("div.jp-Cell")
+             if cell.find_parent("div", class_="jp-Cell") is None]
+    folded: set[int] = set()
+    for cell in cells:
+        tag = _fold_tag(cell)
+        if tag is None or id(cell) in folded:
+            continue
+        label, kind = FOLDED_TAGS[tag]
+        details = soup.new_tag("details", attrs={"class": f"{kind} textbook-{tag}"})
+        summary = soup.new_tag("summary")
+        summary.string = label
+        details.append(summary)
+        cell.insert_before(details)
+        run, sibling = [cell], cell.find_next_sibling()
+        while sibling is not None and "jp-Cell" in (sibling.get("class") or []) \
+                and _fold_tag(sibling) == tag:
+            run.append(sibling)
+            sibling = sibling.find_next_sibling()
+        for member in run:
+            folded.add(id(member))
+            details.append(member.extract())
     return str(soup)
 
 
