@@ -44,6 +44,10 @@ class LaunchDescription(LaunchDescriptionEntity):
         """Append an action."""
         self.add_entity(action)
 
+    def describe(self) -> str:
+        """Return e.g. 'LaunchDescription(4 entities)'."""
+        return f'LaunchDescription({len(self.__entities)} entities)'
+
     def describe_sub_entities(self) -> List[LaunchDescriptionEntity]:
         """The entities."""
         return self.__entities
