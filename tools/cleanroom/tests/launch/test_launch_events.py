@@ -139,3 +139,29 @@ def test_shutdown_process_event_stops_only_its_target(run_launch):
         EmitEvent(event=ShutdownProcess(process_matcher=matches_action(stop)))])])
     assert "sending signal 'SIGINT' to process[stop-2]" in result.output
     assert '[INFO] [keep-1]: process has finished cleanly' in result.output
+
+
+def test_opaque_coroutine_is_awaited_and_cancelled_on_shutdown(run_launch):
+    import asyncio
+
+    from launch.actions import OpaqueCoroutine
+
+    finished, cancelled = [], []
+
+    async def quick(context, word):
+        await asyncio.sleep(0.05)
+        finished.append(word)
+
+    async def forever():
+        try:
+            await asyncio.sleep(60)
+        except asyncio.CancelledError:
+            cancelled.append(True)
+            raise
+
+    run_launch([OpaqueCoroutine(coroutine=quick, args=['done'])])
+    assert finished == ['done']
+    result = run_launch([OpaqueCoroutine(coroutine=forever, ignore_context=True)],
+                        shutdown_after=0.1)
+    assert cancelled == [True]
+    assert result.returncode == 0

@@ -11,6 +11,7 @@ from .group_action import GroupAction
 from .include_launch_description import IncludeLaunchDescription
 from .launch_configuration_actions import SetLaunchConfiguration, UnsetLaunchConfiguration
 from .log_info import LogInfo
+from .opaque_coroutine import OpaqueCoroutine
 from .opaque_function import OpaqueFunction
 from .scope_actions import (
                                   PopEnvironment,
@@ -30,6 +31,7 @@ __all__ = [
     'GroupAction',
     'IncludeLaunchDescription',
     'LogInfo',
+    'OpaqueCoroutine',
     'OpaqueFunction',
     'PopEnvironment',
     'PopLaunchConfigurations',
