@@ -43,6 +43,9 @@ class OpaqueCoroutine(Action):
         loop = context.asyncio_loop
         assert loop is not None, 'OpaqueCoroutine needs a running LaunchService'
         self.__task = loop.create_task(self.__coroutine(*args, **self.__kwargs))
-        context.register_event_handler(OnShutdown(
-            on_shutdown=lambda event, ctx: self.__task.cancel(), handle_once=True))
+        context.register_event_handler(OnShutdown(on_shutdown=self.__cancel, handle_once=True))
         return None
+
+    def __cancel(self, event: object, context: LaunchContext) -> None:
+        if self.__task is not None:
+            self.__task.cancel()
