@@ -11,12 +11,24 @@ if TYPE_CHECKING:
 
 
 def normalize_entities(entities: object) -> List[LaunchDescriptionEntity]:
-    """Turn None, one entity or an iterable of entities into a list."""
+    """Turn None, one entity or an iterable of entities into a list.
+
+    Anything else (e.g. a handler that returns True) is a TypeError that says
+    what was expected, instead of failing later in the launch.
+    """
     if entities is None:
         return []
     if isinstance(entities, LaunchDescriptionEntity):
         return [entities]
-    return list(entities)
+    if isinstance(entities, (str, bytes)) or not hasattr(entities, '__iter__'):
+        raise TypeError('expected None, a launch entity or a list of launch entities, '
+                        f"got '{type(entities).__name__}'")
+    result = list(entities)
+    for entity in result:
+        if not isinstance(entity, LaunchDescriptionEntity):
+            raise TypeError('expected launch entities (actions, LaunchDescription), '
+                            f"got an item of type '{type(entity).__name__}'")
+    return result
 
 
 class BaseEventHandler:

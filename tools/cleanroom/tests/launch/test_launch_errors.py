@@ -127,3 +127,11 @@ def test_exception_in_a_timer_stops_running_processes(run_launch):
     assert 'Traceback (most recent call last)' in result.output  # debug mode shows it
     assert "[ERROR] [victim-1]: process has died" in result.output
     assert result.returncode == 1
+
+
+def test_functions_returning_non_entities_are_reported(run_launch):
+    result = run_launch([OpaqueFunction(function=lambda context: True)])
+    assert _error(result) == ("expected None, a launch entity or a list of launch entities, "
+                              "got 'bool'")
+    result = run_launch([OpaqueFunction(function=lambda context: ['not an action'])])
+    assert "got an item of type 'str'" in _error(result)
