@@ -152,7 +152,7 @@ class LaunchService:
                     context._pop_locals()
             except Exception as exc:  # noqa: BLE001 - any failure ends the launch cleanly
                 self.__fail(exc)
-            await asyncio.sleep(0)
+        await asyncio.sleep(0)  # let I/O and timers run between events
 
     def __visit_all(self, entity: LaunchDescriptionEntity) -> None:
         """Visit depth first; collect futures of actions still running."""
