@@ -13,23 +13,27 @@ import psutil
 import pytest
 from jupyter_client.manager import start_new_kernel
 
+# A child that, like a well-behaved node, ends cleanly on SIGINT.
+SLEEPER = ("import signal, sys, time; "
+           "signal.signal(signal.SIGINT, lambda *a: sys.exit(0)); time.sleep(300)")
+
 LAUNCH_CELL = textwrap.dedent("""
     import sys
     from launch import LaunchDescription, LaunchService
     from launch.actions import ExecuteProcess
     from launch_ros.actions import Node
 
+    SLEEPER = %r
     description = LaunchDescription([
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen'),
-        ExecuteProcess(cmd=[sys.executable, '-c', 'import time; time.sleep(300)'],
-                       name='sleeper', output='screen'),
+        ExecuteProcess(cmd=[sys.executable, '-c', SLEEPER], name='sleeper', output='screen'),
     ])
     service = LaunchService()
     service.include_launch_description(description)
     # A kernel already runs an asyncio loop, so a notebook awaits the launch
     # instead of calling service.run() (which would start a second loop).
     print('launch returned', await service.run_async())
-""")
+""") % SLEEPER
 
 
 def _children(pid: int) -> list[psutil.Process]:
@@ -59,11 +63,13 @@ def kernel(ros_env, tmp_path):
         km.shutdown_kernel(now=True)
 
 
-def _cell_output(kc, msg_id: str) -> str:
-    """Everything the cell printed, up to the kernel going idle after it."""
+def _cell_output(kc, msg_id: str, until: str | None = None) -> str:
+    """What the cell printed, up to `until` appearing or the kernel going idle."""
     texts = []
     while True:
-        msg = kc.get_iopub_msg(timeout=30)
+        if until is not None and until in "".join(texts):
+            return "".join(texts)
+        msg = kc.get_iopub_msg(timeout=60)
         if msg["parent_header"].get("msg_id") != msg_id:
             continue
         if msg["msg_type"] == "stream":
@@ -79,7 +85,7 @@ def _launched(kernel_pid: int) -> list[psutil.Process]:
     procs = _children(kernel_pid)
     cmdlines = [" ".join(p.cmdline()) for p in procs if p.is_running()]
     started = any("sensor_publisher" in c for c in cmdlines) and any(
-        "time.sleep(300)" in c for c in cmdlines)
+        "signal.SIGINT" in c for c in cmdlines)
     return procs if started else []
 
 
@@ -87,12 +93,15 @@ def test_interrupting_the_kernel_stops_every_launched_process(kernel):
     km, kc = kernel
     kernel_pid = km.provisioner.process.pid
     msg_id = kc.execute(LAUNCH_CELL)
-    launched = _wait_for(lambda: _launched(kernel_pid), 60, "the launch to start both processes")
+    # Interrupt only once the node is up and publishing: a process interrupted
+    # while still starting dies of the signal under Jazzy as well.
+    early = _cell_output(kc, msg_id, until="Reading #1")
+    launched = _wait_for(lambda: _launched(kernel_pid), 30, "both launched processes")
 
     km.interrupt_kernel()
     reply = kc.get_shell_msg(timeout=60)
     assert reply["parent_header"]["msg_id"] == msg_id
-    output = _cell_output(kc, msg_id)
+    output = early + _cell_output(kc, msg_id)
 
     gone, alive = psutil.wait_procs(launched, timeout=30)
     assert not alive, "still running after the interrupt: %s" % [
