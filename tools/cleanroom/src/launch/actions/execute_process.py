@@ -33,6 +33,7 @@ from ..events.process import (
 from ..launch_description_entity import LaunchDescriptionEntity
 from ..substitution import Substitution
 from ..substitutions.launch_configuration import LaunchConfiguration
+from ._process_output import ProcessOutput
 from ._process_runner import RunningProcess
 
 if TYPE_CHECKING:
@@ -154,10 +155,7 @@ class ExecuteProcess(Action):
         self.__timers: List[asyncio.TimerHandle] = []
         self.__respawn_handle: Optional[asyncio.TimerHandle] = None
         self.__respawn_count = 0
-        self.__line_buffers: Dict[int, bytes] = {}
-        self.__stdout_cache: List[str] = []
-        self.__stderr_cache: List[str] = []
-        self.__output_loggers: Optional[Tuple] = None
+        self.__output_handler: Optional[ProcessOutput] = None
         self.__logger = None
 
     @staticmethod
@@ -226,14 +224,14 @@ class ExecuteProcess(Action):
         if not self.__cached_output:
             raise RuntimeError('cached output must be true to be able to get stdout, '
                                f"proc '{self.__final_name}'")
-        return ''.join(self.__stdout_cache)
+        return self.__output_handler.cached(1) if self.__output_handler is not None else ''
 
     def get_stderr(self) -> str:
         """Cached stderr (requires cached_output=True)."""
         if not self.__cached_output:
             raise RuntimeError('cached output must be true to be able to get stderr, '
                                f"proc '{self.__final_name}'")
-        return ''.join(self.__stderr_cache)
+        return self.__output_handler.cached(2) if self.__output_handler is not None else ''
 
     def describe(self) -> str:
         """Return a description of the command."""
@@ -277,8 +275,6 @@ class ExecuteProcess(Action):
         return None
 
     def __expand(self, context: LaunchContext) -> None:
-        from ..logging import get_output_loggers
-
         cmd = [_perform(context, token) for token in self.__cmd]
         if not cmd or not cmd[0]:
             raise RuntimeError('ExecuteProcess: empty command')
@@ -296,8 +292,8 @@ class ExecuteProcess(Action):
         for k, v in self.__additional_env or []:
             env[_perform(context, k)] = _perform(context, v)
         self.__final_env = env
-        self.__output_loggers = get_output_loggers(self.__final_name,
-                                                   _perform(context, self.__output))
+        self.__output_handler = ProcessOutput(self.__final_name, _perform(context, self.__output),
+                                              self.__cached_output)
 
     def __prefix_words(self, context: LaunchContext, executable: str) -> List[str]:
         if self.__prefix is not None:
@@ -349,31 +345,15 @@ class ExecuteProcess(Action):
 
     # --- output ---------------------------------------------------------------
     def __on_output(self, fd: int, data: bytes) -> None:
-        assert self.__context is not None and self.__output_loggers is not None
+        assert self.__context is not None and self.__output_handler is not None
         self.__context.emit_event_sync(ProcessIO(text=data, fd=fd, **self.__event_fields()))
-        if self.__cached_output:
-            cache = self.__stdout_cache if fd == 1 else self.__stderr_cache
-            cache.append(data.decode(errors='replace'))
-        buffered = self.__line_buffers.get(fd, b'') + data
-        *lines, rest = buffered.split(b'\n')
-        self.__line_buffers[fd] = rest
-        writer = self.__output_loggers[0 if fd == 1 else 1]
-        for line in lines:
-            writer.line(line.decode(errors='replace').rstrip('\r'))
-
-    def __flush_output(self) -> None:
-        assert self.__output_loggers is not None
-        for fd, rest in self.__line_buffers.items():
-            if rest:
-                self.__output_loggers[0 if fd == 1 else 1].line(
-                    rest.decode(errors='replace').rstrip('\r'))
-        self.__line_buffers.clear()
+        self.__output_handler.write(fd, data)
 
     # --- exit, respawn, shutdown ------------------------------------------------
     def __on_process_exit(self, returncode: int) -> None:
         context = self.__context
         assert context is not None and self.__process is not None
-        self.__flush_output()
+        self.__output_handler.flush()
         for timer in self.__timers:
             timer.cancel()
         self.__timers.clear()
