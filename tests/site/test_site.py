@@ -15,7 +15,7 @@ from textbook import paths
 pytestmark = pytest.mark.xdist_group("lessons")
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope="session")
 def site(tmp_path_factory):
     site_dir = tmp_path_factory.mktemp("site")
     result = subprocess.run(

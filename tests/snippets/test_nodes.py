@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import signal
 import subprocess
+import threading
 import time
 from pathlib import Path
 
@@ -18,21 +19,50 @@ EXECUTABLES = [(package, exe) for package, exes in
                for exe in exes]
 
 
-def _start(ros_env, package: str, exe: str, *ros_args: str) -> subprocess.Popen:
-    path = Path(workspace.INSTALL) / package / "lib" / package / exe
-    return subprocess.Popen([str(path), "--ros-args", *ros_args], env=ros_env,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+class NodeProcess:
+    """A node started from the install tree, its output collected line by line."""
+
+    def __init__(self, ros_env, package: str, exe: str, *ros_args: str):
+        path = Path(workspace.INSTALL) / package / "lib" / package / exe
+        self.proc = subprocess.Popen([str(path), "--ros-args", *ros_args], env=ros_env,
+                                     stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                     text=True)
+        self.lines: list[str] = []
+        self._reader = threading.Thread(target=self._read, daemon=True)
+        self._reader.start()
+
+    def _read(self) -> None:
+        for line in self.proc.stdout:
+            self.lines.append(line.rstrip("\n"))
+
+    @property
+    def output(self) -> str:
+        return "\n".join(self.lines)
+
+    def wait_until(self, condition) -> bool:
+        """Wait (up to the hang guard) until ``condition(lines)`` holds."""
+        deadline = time.monotonic() + STARTUP_LIMIT
+        while time.monotonic() < deadline and self.proc.poll() is None:
+            if condition(self.lines):
+                return True
+            time.sleep(0.1)
+        return condition(self.lines)
+
+    def stop(self) -> int:
+        """Ctrl+C, then the exit code (fails the test if the node does not stop)."""
+        self.proc.send_signal(signal.SIGINT)
+        try:
+            self.proc.wait(timeout=STARTUP_LIMIT)
+        except subprocess.TimeoutExpired:
+            self.proc.kill()
+            self.proc.wait()
+            pytest.fail(f"did not stop on SIGINT:\n{self.output}")
+        self._reader.join(timeout=STARTUP_LIMIT)
+        return self.proc.returncode
 
 
-def _stop(proc: subprocess.Popen) -> tuple[int, str]:
-    proc.send_signal(signal.SIGINT)
-    try:
-        out, _ = proc.communicate(timeout=STARTUP_LIMIT)
-    except subprocess.TimeoutExpired:
-        proc.kill()
-        out, _ = proc.communicate()
-        pytest.fail(f"did not stop on SIGINT:\n{out}")
-    return proc.returncode, out
+def count(text: str):
+    return lambda lines: sum(text in line for line in lines)
 
 
 @pytest.fixture
@@ -62,31 +92,25 @@ def test_there_are_executables():
 @pytest.mark.parametrize("package,exe", EXECUTABLES, ids=lambda v: v)
 def test_node_starts_and_stops_cleanly(package, exe, ros_env, graph):
     probe = f"probe_{exe}"
-    proc = _start(ros_env, package, exe, "-r", f"__node:={probe}")
-    appeared = _wait_for_node(graph, probe, proc)
-    code, out = _stop(proc)
-    assert appeared, f"{package}/{exe} never appeared on the ROS graph:\n{out}"
-    assert code == 0, f"{package}/{exe} exited with {code} on SIGINT:\n{out}"
-    assert "Traceback" not in out, out
-
-
-def _run_together(ros_env, *commands, seconds: float = 3.0) -> list[str]:
-    procs = [_start(ros_env, *command) for command in commands]
-    time.sleep(seconds)
-    results = [_stop(proc) for proc in procs]
-    assert [code for code, _ in results] == [0] * len(procs), results
-    return [out for _, out in results]
+    node = NodeProcess(ros_env, package, exe, "-r", f"__node:={probe}")
+    appeared = _wait_for_node(graph, probe, node.proc)
+    code = node.stop()
+    assert appeared, f"{package}/{exe} never appeared on the ROS graph:\n{node.output}"
+    assert code == 0, f"{package}/{exe} exited with {code} on SIGINT:\n{node.output}"
+    assert "Traceback" not in node.output, node.output
 
 
 def test_processor_receives_what_the_sensor_publishes(ros_env):
-    processor, sensor = _run_together(
-        ros_env, ("my_robot_pkg", "data_processor"),
-        ("my_robot_pkg", "sensor_publisher", "-p", "publish_rate:=10.0"))
-    published = [line.split(": Reading #")[1].split(": ")[1] for line in sensor.splitlines()
+    processor = NodeProcess(ros_env, "my_robot_pkg", "data_processor")
+    sensor = NodeProcess(ros_env, "my_robot_pkg", "sensor_publisher",
+                         "-p", "publish_rate:=10.0")
+    got_five = processor.wait_until(lambda lines: count("Received ")(lines) >= 5)
+    assert [sensor.stop(), processor.stop()] == [0, 0]
+    assert got_five, (sensor.output, processor.output)
+    published = [line.split(": Reading #")[1].split(": ")[1] for line in sensor.lines
                  if ": Reading #" in line]
-    received = [line.split("Received ")[1].split(" ->")[0] for line in processor.splitlines()
+    received = [line.split("Received ")[1].split(" ->")[0] for line in processor.lines
                 if "Received " in line]
-    assert published and received, (sensor, processor)
     # Discovery may drop the first readings and shutdown the last ones; the
     # rest arrive complete and in order.
     n = len(received)
@@ -96,9 +120,12 @@ def test_processor_receives_what_the_sensor_publishes(ros_env):
 
 def test_controller_reads_typed_and_nested_parameters_from_yaml(ros_env, ws_install):
     params = ws_install / "my_robot_pkg/share/my_robot_pkg/config/robot_params.yaml"
-    (out,) = _run_together(
-        ros_env, ("my_robot_pkg", "robot_controller", "--params-file", str(params)),
-        seconds=1.5)
+    controller = NodeProcess(ros_env, "my_robot_pkg", "robot_controller",
+                             "--params-file", str(params))
+    configured = controller.wait_until(count("sensors.camera:"))
+    assert controller.stop() == 0, controller.output
+    assert configured, controller.output
+    out = controller.output
     assert 'Robot "scout" starting with update_rate=20.0 Hz' in out
     assert "Speed limits: linear 0.8 m/s, angular 1.5 rad/s" in out
     assert "Enabled sensors: lidar" in out
@@ -106,7 +133,9 @@ def test_controller_reads_typed_and_nested_parameters_from_yaml(ros_env, ws_inst
 
 
 def test_controller_rejects_a_parameter_of_the_wrong_type(ros_env):
-    proc = _start(ros_env, "my_robot_pkg", "robot_controller", "-p", "update_rate:=fast")
-    out, _ = proc.communicate(timeout=STARTUP_LIMIT)
-    assert proc.returncode != 0
-    assert "update_rate" in out
+    controller = NodeProcess(ros_env, "my_robot_pkg", "robot_controller",
+                             "-p", "update_rate:=fast")
+    controller.proc.wait(timeout=STARTUP_LIMIT)
+    controller._reader.join(timeout=STARTUP_LIMIT)
+    assert controller.proc.returncode != 0
+    assert "update_rate" in controller.output
