@@ -23,7 +23,7 @@ def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog='ros2 launch', description='Run a launch file')
     parser.add_argument('-n', '--noninteractive', action='store_true',
                         help='Run the launch system non-interactively, with no terminal '
-                             'associated (SIGINT is always forwarded to processes)')
+                             'associated')
     parser.add_argument('-d', '--debug', action='store_true',
                         help='Put the launch system in debug mode, provides more verbose '
                              'output.')
