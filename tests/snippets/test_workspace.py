@@ -64,12 +64,15 @@ def test_rebuilt_only_when_a_snippet_changed(small_workspace):
     assert (install / "setup.bash").exists()
 
 
-def test_build_failure_names_the_workspace(small_workspace):
+def test_failed_build_names_the_snippets_and_keeps_the_last_good_install(small_workspace):
     snippets, ws = small_workspace
+    install = workspace.ensure_built(snippets, ws)
+    good = install.resolve()
     setup_py = next(snippets.glob("*/setup.py"))
     setup_py.write_text("raise SystemExit('broken on purpose')\n")
     with pytest.raises(workspace.WorkspaceBuildError, match="colcon build of .*snippets failed"):
         workspace.ensure_built(snippets, ws)
+    assert install.resolve() == good and (install / "setup.bash").exists()
 
 
 def test_sourced_env_is_what_setup_bash_gives(ros_env, ws_install):

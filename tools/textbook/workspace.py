@@ -50,27 +50,51 @@ def colcon_command(snippets: Path = paths.SNIPPETS,
 
 
 def ensure_built(snippets: Path = paths.SNIPPETS, workspace: Path = paths.WORKSPACE) -> Path:
-    """Build ``snippets`` into ``workspace`` unless its install is current; returns
-    the install folder."""
-    install, stamp = workspace / "install", workspace / ".snippets-hash"
+    """Build ``snippets`` unless ``workspace/install`` is current; returns that folder.
+
+    Each content version is built from clean into ``generations/<hash>/``, and
+    ``build``, ``install`` and ``log`` are then switched to it atomically
+    (symlinks), so nodes and lessons running from the previous install are
+    never pulled out from under them, and a failed build leaves it in place.
+    """
+    install = workspace / "install"
     with _build_lock(workspace):
-        wanted = workspace_hash(snippets)
-        if (install / "setup.bash").exists() and stamp.exists() \
-                and stamp.read_text() == wanted:
+        generation = workspace / "generations" / workspace_hash(snippets)[:16]
+        if (install / "setup.bash").exists() \
+                and install.resolve() == (generation / "install").resolve():
             return install
-        for sub in ("build", "install", "log"):
-            shutil.rmtree(workspace / sub, ignore_errors=True)
-        workspace.mkdir(parents=True, exist_ok=True)
+        previous = install.resolve().parent if install.is_symlink() else None
+        shutil.rmtree(generation, ignore_errors=True)
+        generation.mkdir(parents=True)
         env = dict(os.environ, PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
-        result = subprocess.run(colcon_command(snippets, workspace), cwd=workspace, env=env,
+        result = subprocess.run(colcon_command(snippets, generation), cwd=generation, env=env,
                                 capture_output=True, text=True, timeout=600)
         if result.returncode != 0:
             raise WorkspaceBuildError(
                 f"colcon build of {paths.rel(snippets)} failed (exit {result.returncode}); "
-                f"logs in {paths.rel(workspace / 'log')}\n{result.stdout[-4000:]}"
+                f"logs in {paths.rel(generation / 'log')}\n{result.stdout[-4000:]}"
                 f"{result.stderr[-4000:]}")
-        stamp.write_text(wanted)
+        for sub in ("build", "install", "log"):
+            _switch(workspace / sub, generation / sub)
+        _prune(workspace / "generations", keep={generation, previous})
         return install
+
+
+def _switch(link: Path, target: Path) -> None:
+    """Point ``link`` at ``target`` in one step (replacing an old folder or link)."""
+    if link.is_dir() and not link.is_symlink():
+        shutil.rmtree(link)
+    temporary = link.with_name(f".{link.name}.{os.getpid()}")
+    temporary.unlink(missing_ok=True)
+    temporary.symlink_to(os.path.relpath(target, link.parent))
+    os.replace(temporary, link)
+
+
+def _prune(generations: Path, keep: set[Path | None]) -> None:
+    """Delete builds older than the current and the previous one."""
+    for old in generations.iterdir():
+        if old not in keep:
+            shutil.rmtree(old, ignore_errors=True)
 
 
 @functools.lru_cache(maxsize=8)
