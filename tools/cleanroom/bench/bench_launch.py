@@ -14,8 +14,12 @@ It also reports the CPU time used by the launch process itself and by the
 talkers: on 2 cores the rclpy talkers' own start-up and tear-down (about
 0.3-0.5 s of CPU each) bound 'ready' and 'shutdown', not the launch.
 
-It prints the median of --repeat runs next to the figures of real ROS 2
-Jazzy on a 2-core machine, and the ratio ours / reference (lower is better).
+Two references: the figures of real ROS 2 Jazzy's launch on a 2-core machine
+(measured elsewhere, with its own talkers), and a floor measured in the same
+run: the same talker command lines started with plain subprocess.Popen,
+waited on until ready, then sent SIGINT, with no launch at all.  The ratio
+ours / floor is what our launch adds on this machine (1.00 = nothing); the
+ratio ours / Jazzy compares absolute times across machines and talkers.
 
 The talker comes from a tiny ament_python package the script writes to a
 temporary folder and builds with colcon (the colcon next to this Python).
@@ -190,6 +194,39 @@ def run_once(count: int) -> Dict[str, float]:
     return {**{key: value - t0 for key, value in marks.items()}, **cpu}
 
 
+def run_direct(count: int, executable: str) -> Dict[str, float]:
+    """The floor: start the same talker command lines without launch, stop with SIGINT."""
+    import selectors
+    import signal
+
+    t0 = time.monotonic()
+    procs = [subprocess.Popen([executable, '--ros-args', '-r', f'__node:=talker_{i}'],
+                              stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
+             for i in range(count)]
+    marks = {'started': time.monotonic()}
+    selector = selectors.DefaultSelector()
+    for proc in procs:
+        selector.register(proc.stderr, selectors.EVENT_READ, proc)
+    waiting = set(procs)
+    deadline = time.monotonic() + 120
+    while waiting and time.monotonic() < deadline:
+        for key, _ in selector.select(timeout=1):
+            line = key.fileobj.readline()
+            if b'ready' in line or not line:
+                waiting.discard(key.data)
+                selector.unregister(key.fileobj)
+    marks['ready'] = time.monotonic()
+    for proc in procs:
+        proc.send_signal(signal.SIGINT)
+    codes = [proc.wait(timeout=60) for proc in procs]
+    marks['shutdown'] = time.monotonic()
+    for proc in procs:
+        proc.stderr.close()
+    if waiting or any(codes):
+        raise RuntimeError(f'direct N={count}: {len(waiting)} never ready, exit codes {codes}')
+    return {key: value - t0 for key, value in marks.items()}
+
+
 def _cpu(who: int) -> float:
     usage = resource.getrusage(who)
     return usage.ru_utime + usage.ru_stime
@@ -216,11 +253,14 @@ def main() -> int:
     with tempfile.TemporaryDirectory(prefix='bench-launch-') as tmp:
         os.environ['ROS_LOG_DIR'] = os.path.join(tmp, 'log')
         print(f'building the talker package (domain {domain_id}) ...', file=sys.stderr)
-        use_prefix(build_talker_package(Path(tmp) / 'ws'))
-        results = {}
+        prefix = build_talker_package(Path(tmp) / 'ws')
+        use_prefix(prefix)
+        talker = str(prefix / 'lib' / 'bench_pkg' / 'talker')
+        results, floors = {}, {}
         for count in opts.counts:
-            runs = []
+            runs, direct = [], []
             for _ in range(opts.repeat):
+                direct.append(run_direct(count, talker))
                 saved = sys.stdout
                 sys.stdout = open(os.devnull, 'w')  # noqa: SIM115 - launch chatter hidden
                 try:
@@ -229,19 +269,24 @@ def main() -> int:
                     sys.stdout.close()
                     sys.stdout = saved
             results[count] = {key: statistics.median(r[key] for r in runs) for key in runs[0]}
+            floors[count] = {key: statistics.median(r[key] for r in direct) for key in direct[0]}
     os.close(lock_fd)
-    print(f'\nmedian of {opts.repeat} runs, seconds from LaunchService.run(); '
-          'reference: ROS 2 Jazzy, 2 cores')
-    header = (f"{'N':>4} | {'started':>8} {'ref':>6} {'ratio':>6} | {'ready':>6} | "
-              f"{'shutdown':>8} {'ref':>6} {'ratio':>6} | {'launch cpu':>10} {'nodes cpu':>9}")
+    print(f'\nmedian of {opts.repeat} runs, seconds from the start of the launch; '
+          'floor: the same talkers without launch, this run; Jazzy: real launch, 2 cores')
+    header = (f"{'N':>4} | {'started':>8} {'Jazzy':>6} {'ratio':>6} | {'ready':>6} {'floor':>6} | "
+              f"{'shutdown':>8} {'floor':>6} {'ratio':>6} {'Jazzy':>6} {'ratio':>6} | "
+              f"{'launch cpu':>10} {'nodes cpu':>9}")
     print(header)
     print('-' * len(header))
     for count, timing in results.items():
+        floor = floors[count]
         ref_started, ref_shutdown = REFERENCE.get(count, (None, None))
         print(f"{count:>4} | {timing['started']:>8.3f} {_ref(ref_started):>6} "
-              f"{_ratio(timing['started'], ref_started):>6} | {timing['ready']:>6.2f} | "
-              f"{timing['shutdown']:>8.2f} {_ref(ref_shutdown):>6} "
-              f"{_ratio(timing['shutdown'], ref_shutdown):>6} | "
+              f"{_ratio(timing['started'], ref_started):>6} | "
+              f"{timing['ready']:>6.2f} {floor['ready']:>6.2f} | "
+              f"{timing['shutdown']:>8.2f} {floor['shutdown']:>6.2f} "
+              f"{_ratio(timing['shutdown'], floor['shutdown']):>6} "
+              f"{_ref(ref_shutdown):>6} {_ratio(timing['shutdown'], ref_shutdown):>6} | "
               f"{timing['launch_cpu']:>10.2f} {timing['nodes_cpu']:>9.2f}")
     return 0
 
