@@ -8,43 +8,25 @@ session and is stopped (SIGINT, then SIGKILL) when the module ends.
 """
 from __future__ import annotations
 
-import fcntl
 import os
 import signal
 import subprocess
 import sys
-import tempfile
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import psutil
 import pytest
+from ros_domains import lease_ros_domain
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')
 SAMPLE_NODES = str(Path(__file__).with_name('sample_nodes.py'))
 
 
-def lease_domain() -> tuple[int, int]:
-    """Lock a free domain ID 1-89 for this module; returns (id, fd holding the lock)."""
-    lock_dir = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
-    lock_dir.mkdir(parents=True, exist_ok=True)
-    for domain_id in range(1, 90):
-        fd = os.open(lock_dir / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            os.close(fd)
-            continue
-        os.ftruncate(fd, 0)
-        os.write(fd, f'{os.getpid()}\n'.encode())
-        return domain_id, fd
-    raise RuntimeError('no free ROS domain ID in 1-89')
-
-
 @pytest.fixture(scope='module')
 def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
     """Environment for the commands and nodes of one test module: a private domain."""
-    domain_id, fd = lease_domain()
+    domain_id, fd = lease_ros_domain()
     env = {k: v for k, v in os.environ.items()
            if k not in ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS')}
     env.update(ROS_DOMAIN_ID=str(domain_id), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',

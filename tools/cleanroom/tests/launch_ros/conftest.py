@@ -4,43 +4,20 @@ a session-end check that no process started by the tests survived.
 """
 from __future__ import annotations
 
-import fcntl
 import os
 import shutil
 import subprocess
 import sys
-import tempfile
 import uuid
 from collections.abc import Iterator
 from pathlib import Path
 
 import psutil
 import pytest
+from ros_domains import lease_ros_domain
 
 HERE = Path(__file__).parent
 TOKEN_VAR = 'LAUNCH_ROS_TEST_TOKEN'
-DOMAIN_IDS = range(1, 90)
-
-
-def _lock_dir() -> Path:
-    path = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
-    path.mkdir(parents=True, exist_ok=True)
-    return path
-
-
-def _lease_domain() -> tuple[int, int]:
-    """Lock one free ROS domain ID (CONTRIBUTING.md allocator); returns (id, fd)."""
-    for domain_id in DOMAIN_IDS:
-        fd = os.open(_lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            os.close(fd)
-            continue
-        os.ftruncate(fd, 0)
-        os.write(fd, f'{os.getpid()}\n'.encode())
-        return domain_id, fd
-    raise RuntimeError('no free ROS domain ID in 1-89')
 
 
 def _processes_with_token(token: str) -> list[psutil.Process]:
@@ -60,7 +37,7 @@ class DomainLease:
     """One locked ROS domain ID and the token marking the processes started under it."""
 
     def __init__(self) -> None:
-        self.domain_id, self._fd = _lease_domain()
+        self.domain_id, self._fd = lease_ros_domain()
         self.token = uuid.uuid4().hex
 
     def env(self) -> dict[str, str]:
