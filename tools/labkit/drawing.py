@@ -1,8 +1,12 @@
 """Draw a :class:`GraphSnapshot` the way rqt_graph does: nodes as ellipses,
 topics as boxes, arrows from publisher to topic to subscriber.
 
-The layout is layered left to right by data flow (sources on the left) and
-fully deterministic, so an executed lesson shows the same picture on every
+Every label is measured with the figure's own renderer first, and the
+layout (:mod:`labkit.graph_layout`) sizes its columns from those
+measurements, so shapes never overlap and arrows never cross a label.  The
+figure stays within notebook width (:data:`MAX_WIDTH`): a wide graph first
+gets a smaller font, then wraps into bands and grows downwards.  The layout
+is deterministic, so an executed lesson shows the same picture on every
 build.
 """
 from __future__ import annotations
@@ -12,13 +16,54 @@ from typing import Any
 import matplotlib.pyplot as plt
 import networkx as nx
 from matplotlib.figure import Figure
+from matplotlib.patches import BoxStyle
+from matplotlib.path import Path
+from matplotlib.text import Text
+from matplotlib.transforms import Affine2D
 
-NODE_STYLE = dict(boxstyle='ellipse,pad=0.35', facecolor='#dbe9f6', edgecolor='#2b6cb0',
+from labkit.graph_layout import Placement, Spacing, place, without_cycles
+from labkit.graph_paths import FollowPath
+
+__all__ = ['MAX_WIDTH', 'draw_graph', 'layers', 'layout', 'to_networkx', 'without_cycles']
+
+#: Widest figure, in inches: what a notebook shows without scaling it down.
+MAX_WIDTH = 9.5
+#: Label sizes in points, tried in turn before wrapping into bands (at the first).
+FONT_SIZES = (9.0, 8.0)
+TITLE_SIZE = 11.0
+TITLE_SPACE = 0.4  # inches above the graph for the title
+
+
+class Ellipse(BoxStyle.Ellipse):
+    """An ellipse around a label that is taller and so narrower than matplotlib's.
+
+    matplotlib's ellipse circumscribes the padded label with both axes
+    stretched by √2, which makes long node names very wide.  Stretching the
+    height by 2 instead needs only 2/√3 ≈ 1.15 of the width, still with the
+    whole label inside.
+    """
+
+    HEIGHT_STRETCH = 2.0
+
+    def __call__(self, x0: float, y0: float, width: float, height: float,
+                 mutation_size: float) -> Path:
+        pad = mutation_size * self.pad
+        width, height = width + 2 * pad, height + 2 * pad
+        b = height / 2 * self.HEIGHT_STRETCH
+        a = width / 2 / (1 - 1 / self.HEIGHT_STRETCH ** 2) ** 0.5
+        centre_x, centre_y = x0 + width / 2 - pad, y0 + height / 2 - pad
+        return Path.unit_circle().transformed(
+            Affine2D().scale(a, b).translate(centre_x, centre_y))
+
+
+NODE_STYLE = dict(boxstyle=Ellipse(pad=0.3), facecolor='#dbe9f6', edgecolor='#2b6cb0',
                   linewidth=1.2)
-TOPIC_STYLE = dict(boxstyle='square,pad=0.45', facecolor='#fdf1dc', edgecolor='#b7791f',
+TOPIC_STYLE = dict(boxstyle='square,pad=0.5', facecolor='#fdf1dc', edgecolor='#b7791f',
                    linewidth=1.2)
-X_GAP = 2.6  # layout units between layers
-Y_GAP = 1.0  # layout units between rows
+ARROW_COLOR = '#4a5568'
+ARROW_SCALE = 11.0  # points; the head of '-|>' is 0.4 of it long and 0.2 of it wide
+HEAD_HALF_WIDTH = 0.2 * ARROW_SCALE / 72 + 0.01  # inches, with a little air
+TEXT_COLOR = '#1a202c'
 
 
 def to_networkx(snapshot: Any) -> nx.DiGraph:
@@ -32,65 +77,61 @@ def to_networkx(snapshot: Any) -> nx.DiGraph:
     return graph
 
 
-def without_cycles(graph: nx.DiGraph) -> nx.DiGraph:
-    """The graph minus the edges that close a cycle (a feedback loop's way back).
-
-    Found by depth-first search from the sources, in name order, so the same
-    graph always loses the same edges.
-    """
-    dag = nx.DiGraph()
-    dag.add_nodes_from(graph.nodes)
-    state: dict[str, str] = {}
-
-    def visit(vertex: str) -> None:
-        state[vertex] = 'open'
-        for successor in sorted(graph.successors(vertex)):
-            if state.get(successor) == 'open':
-                continue  # leads back to a vertex on the current path
-            dag.add_edge(vertex, successor)
-            if successor not in state:
-                visit(successor)
-        state[vertex] = 'done'
-
-    for vertex in sorted(graph.nodes, key=lambda v: (graph.in_degree(v) > 0, v)):
-        if vertex not in state:
-            visit(vertex)
-    return dag
-
-
 def layers(graph: nx.DiGraph) -> list[list[str]]:
-    """Vertices in columns, each right of everything that feeds it.
+    """Vertices in columns, each right of everything that feeds it, top to bottom.
 
     A feedback loop is laid out along the data flow and only its way back
-    points left.  Within a column, vertices sit near the average row of
-    their inputs (one barycentre sweep, ties by name), which keeps arrows
-    short and uncrossed.
+    points left.  Within a column the order keeps arrows from crossing.
     """
-    dag = without_cycles(graph)
-    column_of: dict[str, int] = {}
-    for vertex in nx.lexicographical_topological_sort(dag):
-        column_of[vertex] = max((column_of[p] + 1 for p in dag.predecessors(vertex)), default=0)
-    columns: list[list[str]] = [[] for _ in range(max(column_of.values(), default=-1) + 1)]
-    for vertex in sorted(graph.nodes):
-        columns[column_of[vertex]].append(vertex)
-    row_of: dict[str, float] = {}
-    for column in columns:
-        def barycentre(vertex: str) -> tuple[float, str]:
-            rows = [row_of[p] for p in dag.predecessors(vertex) if p in row_of]
-            return (sum(rows) / len(rows) if rows else float('inf'), vertex)
-        column.sort(key=barycentre)
-        for row, vertex in enumerate(column):
-            row_of[vertex] = row - (len(column) - 1) / 2
-    return columns
+    return layout_plan(graph).columns
 
 
-def layout(graph: nx.DiGraph) -> dict[str, tuple[float, float]]:
-    """x, y position of every vertex (x grows with the data flow, first row on top)."""
-    positions = {}
-    for x, column in enumerate(layers(graph)):
-        for row, vertex in enumerate(column):
-            positions[vertex] = (x * X_GAP, ((len(column) - 1) / 2 - row) * Y_GAP)
-    return positions
+def layout(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
+           ) -> dict[str, tuple[float, float]]:
+    """x, y centre (inches, y up) of every vertex for shapes of the given sizes
+    (default: 1.2 x 0.35 inches each)."""
+    return layout_plan(graph, sizes).centres
+
+
+def layout_plan(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
+                max_width: float | None = None) -> Placement:
+    """The full :class:`~labkit.graph_layout.Placement` (centres and arrow paths)."""
+    if sizes is None:
+        sizes = {vertex: (1.2, 0.35) for vertex in graph}
+    # arrows meet a topic's box on its sides, clear of the corners, where an
+    # arrowhead arriving at a slant would cut into the box
+    reach = {vertex: sizes[vertex][1] / 2 - HEAD_HALF_WIDTH for vertex in graph
+             if graph.nodes[vertex].get('kind') == 'topic'}
+    return place(graph, sizes, Spacing(), max_width, reach)
+
+
+def _label(vertex: str, graph: nx.DiGraph, show_types: bool) -> str:
+    if graph.nodes[vertex]['kind'] == 'topic' and show_types:
+        return f"{vertex}\n[{graph.nodes[vertex]['type']}]"
+    return vertex
+
+
+def _measure(labels: dict[str, Text], figure: Figure, fontsize: float,
+             ) -> dict[str, tuple[float, float]]:
+    """Width and height, in inches, of each label's shape at `fontsize`."""
+    renderer = figure.canvas.get_renderer()
+    sizes = {}
+    for vertex, label in labels.items():
+        label.set_fontsize(fontsize)
+        label.update_bbox_position_size(renderer)
+        extent = label.get_bbox_patch().get_window_extent(renderer)
+        sizes[vertex] = (extent.width / figure.dpi, extent.height / figure.dpi)
+    return sizes
+
+
+def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure) -> Placement:
+    """The layout at the font size that needs the fewest bands (the larger on a
+    tie); leaves the labels at that size."""
+    plans = [(layout_plan(graph, _measure(labels, figure, size), MAX_WIDTH), size)
+             for size in FONT_SIZES]
+    plan, fontsize = min(plans, key=lambda entry: (entry[0].bands, -entry[1]))
+    _measure(labels, figure, fontsize)
+    return plan
 
 
 def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | None = None,
@@ -104,42 +145,59 @@ def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | N
         from labkit.graph import graph as take_snapshot
         snapshot = take_snapshot()
     graph = to_networkx(snapshot)
-    positions = layout(graph)
-    columns = layers(graph)
-    rows = max((len(column) for column in columns), default=1)
-    # About 1.6 inches per column keeps 9 pt labels apart and a 9-column
-    # system readable at notebook width.
-    width = min(15.0, max(6.0, 1.6 * len(columns)))
-    figure = plt.figure(figsize=(width, max(2.5, 0.8 * rows + 1.0)))
-    plt.close(figure)  # returned, not also auto-shown: Jupyter displays it once
-    axes = figure.add_subplot()
+    figure = plt.figure(figsize=(4.0, 1.0))
+    try:  # measuring needs the open figure's canvas
+        _draw(figure, graph, show_types, title)
+    finally:
+        plt.close(figure)  # returned, not also auto-shown: Jupyter displays it once
+    return figure
+
+
+def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None) -> None:
+    axes = figure.add_axes((0.0, 0.0, 1.0, 1.0))
     axes.set_axis_off()
     if title:
-        axes.set_title(title)
-    if not positions:
-        axes.text(0.5, 0.5, 'no nodes in the graph', ha='center', va='center')
-        return figure
-    labels = {}
-    for vertex, (x, y) in positions.items():
-        kind = graph.nodes[vertex]['kind']
-        text = vertex
-        if kind == 'topic' and show_types:
-            text = f"{vertex}\n[{graph.nodes[vertex]['type']}]"
-        labels[vertex] = axes.text(x, y, text, ha='center', va='center', fontsize=9,
-                                   bbox=NODE_STYLE if kind == 'node' else TOPIC_STYLE,
-                                   zorder=3)
+        axes.set_title(title, fontsize=TITLE_SIZE, color=TEXT_COLOR, pad=8)
+    if not graph:
+        axes.text(0.5, 0.5, 'no nodes in the graph', ha='center', va='center',
+                  fontsize=FONT_SIZES[0] + 1, color='#718096', transform=axes.transAxes)
+        _reserve_title_space(figure, axes, 4.0, 1.0, bool(title))
+        return
+    labels = {
+        vertex: axes.text(0, 0, _label(vertex, graph, show_types), ha='center', va='center',
+                          color=TEXT_COLOR, zorder=3, multialignment='center',
+                          bbox=NODE_STYLE if graph.nodes[vertex]['kind'] == 'node'
+                          else TOPIC_STYLE)
+        for vertex in sorted(graph)}
+    plan = _fit(graph, labels, figure)
+    width, height = plan.width, plan.height
+    if title:  # never cut the title off
+        extent = axes.title.get_window_extent(figure.canvas.get_renderer())
+        width = max(width, extent.width / figure.dpi + 0.4)
+    _reserve_title_space(figure, axes, width, height, bool(title))
+    spare = (width - plan.width) / 2  # under a wide title, the graph sits centred
+    axes.set_xlim(-spare, plan.width + spare)
+    axes.set_ylim(0, height)
+    for vertex, label in labels.items():
+        label.set_position(plan.centres[vertex])
     for source, target in sorted(graph.edges):
-        backwards = positions[target][0] <= positions[source][0]
-        # Drawn after the labels (higher zorder), so that their boxes are in
-        # place when each arrow is clipped to them and its head stays visible.
-        axes.annotate('', xy=positions[target], xytext=positions[source], zorder=4,
-                      arrowprops=dict(arrowstyle='-|>', color='#4a5568', linewidth=1.1,
-                                      shrinkA=2, shrinkB=2,
-                                      connectionstyle=f'arc3,rad={0.4 if backwards else 0}',
-                                      patchA=labels[source].get_bbox_patch(),
-                                      patchB=labels[target].get_bbox_patch()))
-    xs = [x for x, _ in positions.values()]
-    ys = [y for _, y in positions.values()]
-    axes.set_xlim(min(xs) - X_GAP / 2, max(xs) + X_GAP / 2)
-    axes.set_ylim(min(ys) - Y_GAP / 1.5, max(ys) + Y_GAP / 1.5)
-    return figure
+        if (source, target) not in plan.routes:
+            continue  # a self-loop: a node and a topic with the same name
+        # Arrows are drawn after the labels (higher zorder): each label has
+        # placed its shape by then, and the arrow is cut at that shape.
+        axes.annotate('', xy=plan.centres[target], xytext=plan.centres[source], zorder=4,
+                      arrowprops=dict(
+                          arrowstyle='-|>', color=ARROW_COLOR, linewidth=1.1,
+                          mutation_scale=ARROW_SCALE, shrinkA=1.0, shrinkB=0.5,
+                          connectionstyle=FollowPath(plan.routes[(source, target)],
+                                                     axes.transData),
+                          patchA=labels[source].get_bbox_patch(),
+                          patchB=labels[target].get_bbox_patch()))
+
+
+def _reserve_title_space(figure: Figure, axes: Any, width: float, height: float,
+                         titled: bool) -> None:
+    """Size the figure to `width` x `height` inches of axes, plus room for a title."""
+    total = height + (TITLE_SPACE if titled else 0.0)
+    figure.set_size_inches(width, total)
+    axes.set_position((0.0, 0.0, 1.0, height / total))
