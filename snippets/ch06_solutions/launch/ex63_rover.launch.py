@@ -1,6 +1,7 @@
 """Exercise 6.3.1: a rover whose name, speed limit and sensor are launch arguments.
 
-    ros2 launch ch06_solutions ex63_rover.launch.py robot_name:=explorer max_speed:=1.5 use_sensor:=false
+    ros2 launch ch06_solutions ex63_rover.launch.py \
+        robot_name:=explorer max_speed:=1.5 use_sensor:=false
 """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, LogInfo
