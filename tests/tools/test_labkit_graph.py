@@ -110,3 +110,54 @@ def test_drawing_ten_nodes_labels_every_vertex():
 def test_drawing_an_empty_graph():
     figure = labkit.draw_graph(GraphSnapshot((), {}))
     assert [t.get_text() for t in figure.axes[0].texts] == ['no nodes in the graph']
+
+
+
+class _GraphWithLeftovers:
+    """What a long-lived observer can see after missed departures: exited
+    /gone and an exited twin of /talker are still listed, own nothing, and
+    the twin shadows the live /talker in the by-node queries."""
+
+    class Endpoint:
+        def __init__(self, node_name: str) -> None:
+            self.node_name, self.node_namespace = node_name, '/'
+
+    def get_node_names_and_namespaces(self):
+        return [('talker', '/'), ('talker', '/'), ('listener', '/'), ('gone', '/'),
+                ('server', '/')]
+
+    def get_topic_names_and_types(self):
+        return [('/chatter', ['std_msgs/msg/String']), ('/rosout', ['rcl_interfaces/msg/Log'])]
+
+    def get_publishers_info_by_topic(self, topic):
+        names = {'/chatter': ['talker', '_NODE_NAME_UNKNOWN_'], '/rosout': ['talker', 'listener']}
+        return [self.Endpoint(name) for name in names[topic]]
+
+    def get_subscriptions_info_by_topic(self, topic):
+        return [self.Endpoint('listener')] if topic == '/chatter' else []
+
+    def get_publisher_names_and_types_by_node(self, name, namespace):
+        return []  # the leftover twin answers for /talker
+
+    get_subscriber_names_and_types_by_node = get_publisher_names_and_types_by_node
+    get_client_names_and_types_by_node = get_publisher_names_and_types_by_node
+
+    def get_service_names_and_types_by_node(self, name, namespace):
+        return [('/server/reset', ['std_srvs/srv/Empty'])] if name == 'server' else []
+
+    def get_service_names_and_types(self):
+        return [('/server/reset', ['std_srvs/srv/Empty'])]
+
+
+def test_left_over_nodes_of_exited_processes_are_left_out(monkeypatch):
+    from types import SimpleNamespace
+
+    from labkit import observer
+    monkeypatch.setattr(observer, 'settle', lambda: None)
+    monkeypatch.setattr(observer, 'observer',
+                        lambda: SimpleNamespace(node=_GraphWithLeftovers()))
+    assert observer.node_names() == ['/listener', '/server', '/talker']
+    snapshot = labkit.graph()
+    assert snapshot.nodes == ('/listener', '/server', '/talker')
+    assert snapshot.topics == {'/chatter': Topic('/chatter', ('std_msgs/msg/String',),
+                                                 ('/talker',), ('/listener',))}

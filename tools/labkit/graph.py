@@ -94,40 +94,24 @@ def graph(include_hidden: bool = False, include_default_topics: bool = False) ->
     """
     observer.settle()
     node = observer.observer().node
-    names = [(name, namespace, observer.full_name(name, namespace))
-             for name, namespace in node.get_node_names_and_namespaces()]
-    visible = sorted({full for _, _, full in names
-                      if include_hidden or not observer.is_hidden(full)})
-    publishers: dict[str, set[str]] = {}
-    subscribers: dict[str, set[str]] = {}
-    for name, namespace, full in names:
-        if full not in visible:
-            continue
-        for topic, _ in _safe(node.get_publisher_names_and_types_by_node, name, namespace):
-            publishers.setdefault(topic, set()).add(full)
-        for topic, _ in _safe(node.get_subscriber_names_and_types_by_node, name, namespace):
-            subscribers.setdefault(topic, set()).add(full)
+    endpoints = observer.topic_endpoints(node)
+    visible = {name for name in observer.live_node_names(node, endpoints)
+               if include_hidden or not observer.is_hidden(name)}
     topics = {}
-    for topic, types in sorted(node.get_topic_names_and_types()):
+    for topic, (types, publishers, subscribers) in sorted(endpoints.items()):
         if not include_hidden and observer.is_hidden(topic):
             continue
         if not include_default_topics and topic in DEFAULT_TOPICS:
             continue
-        pubs, subs = publishers.get(topic, set()), subscribers.get(topic, set())
+        pubs = sorted(name for name in publishers if name in visible)
+        subs = sorted(name for name in subscribers if name in visible)
         if not pubs and not subs:
             continue  # only hidden nodes use it
-        topics[topic] = Topic(topic, tuple(types), tuple(sorted(pubs)), tuple(sorted(subs)))
+        topics[topic] = Topic(topic, tuple(types), tuple(pubs), tuple(subs))
     services = {service: tuple(types)
                 for service, types in sorted(node.get_service_names_and_types())
                 if include_hidden or not observer.is_hidden(service)}
-    return GraphSnapshot(tuple(visible), topics, services)
-
-
-def _safe(query: Any, name: str, namespace: str) -> list[tuple[str, list[str]]]:
-    try:
-        return query(name, namespace)
-    except Exception:  # the node left between listing and asking
-        return []
+    return GraphSnapshot(tuple(sorted(visible)), topics, services)
 
 
 def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:

@@ -29,6 +29,9 @@ FIRST_LOOK_WAIT = 3.6
 #: Later looks only wait until the graph has been unchanged for this long.
 QUIET_TIME = 0.3
 
+#: Node name the rmw gives an endpoint before its node is known.
+UNKNOWN_NODE = '_NODE_NAME_UNKNOWN_'
+
 _lock = threading.RLock()
 _observer: Observer | None = None
 
@@ -96,10 +99,58 @@ def is_hidden(name: str) -> bool:
     return any(token.startswith('_') for token in name.split('/') if token)
 
 
+def topic_endpoints(node: Node) -> dict[str, tuple[list[str], set[str], set[str]]]:
+    """Every topic: its types, and the full names of its publishers and subscribers.
+
+    Read endpoint by endpoint (`get_publishers_info_by_topic`), not node by
+    node: a long-lived observer sometimes keeps a node that has exited in its
+    node list for good (a discovery update racing the node's departure,
+    ros2/ros2#514).  Such a leftover owns no endpoints, but it can shadow a
+    live node of the same name in the by-node queries, which then report
+    nothing for the live one.  Endpoints of exited nodes are always gone.
+    """
+    topics = {}
+    for topic, types in node.get_topic_names_and_types():
+        try:
+            publishers = node.get_publishers_info_by_topic(topic)
+            subscribers = node.get_subscriptions_info_by_topic(topic)
+        except Exception:  # the topic went away between listing and asking
+            continue
+        topics[topic] = (types, _owners(publishers), _owners(subscribers))
+    return topics
+
+
+def _owners(endpoints: list[Any]) -> set[str]:
+    """Full node names of endpoints whose node is known yet (a node's name
+    arrives a moment after its first endpoints)."""
+    return {full_name(info.node_name, info.node_namespace) for info in endpoints
+            if info.node_name != UNKNOWN_NODE}
+
+
+def _has_services(node: Node, name: str, namespace: str) -> bool:
+    """Whether the node offers or calls a service (left-over nodes do neither)."""
+    try:
+        return bool(node.get_service_names_and_types_by_node(name, namespace)
+                    or node.get_client_names_and_types_by_node(name, namespace))
+    except Exception:  # the node left between listing and asking
+        return False
+
+
+def live_node_names(node: Node, topics: dict | None = None) -> set[str]:
+    """Full names of the nodes that own a topic endpoint or a service, so
+    without the left-overs of exited nodes (see :func:`topic_endpoints`)."""
+    if topics is None:
+        topics = topic_endpoints(node)
+    names = {name for _, publishers, subscribers in topics.values()
+             for name in publishers | subscribers}
+    names |= {full_name(n, ns) for n, ns in node.get_node_names_and_namespaces()
+              if full_name(n, ns) not in names and _has_services(node, n, ns)}
+    return names
+
+
 def node_names(include_hidden: bool = False) -> list[str]:
     """Full names of the nodes in the graph right now, sorted."""
-    node = observer().node
-    names = {full_name(n, ns) for n, ns in node.get_node_names_and_namespaces()}
+    names = live_node_names(observer().node)
     return sorted(n for n in names if include_hidden or not is_hidden(n))
 
 
