@@ -6,14 +6,11 @@ falling back to a waiting thread.  This keeps the loop free of child-watcher
 threads per process and makes every start cheap.
 
 Every child gets PR_SET_PDEATHSIG=SIGKILL so that it dies with the launch
-even when the launch itself is killed or crashes.  It is set by exec'ing the
-command through util-linux `setpriv --pdeathsig KILL` when that exists: a
-Python `preexec_fn` would force subprocess to fork (instead of vfork) and
-run Python code in every child before exec, which costs several
-milliseconds per start once the started processes compete for the CPU.
-Without setpriv, a ctypes prctl() in preexec_fn does the same job.  (setpriv
-cannot notice a parent that died in the ~millisecond before its prctl; the
-launch dying right then is the one case a child could survive.)
+even when the launch itself is killed or crashes.  It is set in the child
+between fork and exec (preexec_fn), followed by a check that the parent is
+still the launch: a launch killed just before the prctl would otherwise
+leave the child behind.  (`setpriv --pdeathsig` starts processes faster but
+has exactly that window, which a busy machine hits.)
 """
 from __future__ import annotations
 
@@ -21,7 +18,6 @@ import asyncio
 import ctypes
 import os
 import pty
-import shutil
 import signal
 import subprocess
 import threading
@@ -34,31 +30,6 @@ try:
     _libc: Optional[ctypes.CDLL] = ctypes.CDLL(None, use_errno=True)
 except OSError:  # pragma: no cover - not Linux/glibc
     _libc = None
-
-
-_SETPRIV = shutil.which('setpriv', path=os.defpath + os.pathsep + '/usr/bin:/bin')
-
-
-def _setpriv_supports_pdeathsig() -> bool:
-    if _SETPRIV is None:
-        return False
-    try:
-        result = subprocess.run([_SETPRIV, '--pdeathsig', 'KILL', '--', 'true'],
-                                capture_output=True, timeout=5, check=False)
-    except (OSError, subprocess.SubprocessError):
-        return False
-    return result.returncode == 0
-
-
-_USE_SETPRIV: Optional[bool] = None
-
-
-def death_signal_wrapper() -> List[str]:
-    """Words to put before a command so that it gets PDEATHSIG=SIGKILL ([] if unavailable)."""
-    global _USE_SETPRIV
-    if _USE_SETPRIV is None:
-        _USE_SETPRIV = _setpriv_supports_pdeathsig()
-    return [_SETPRIV, '--pdeathsig', 'KILL', '--'] if _USE_SETPRIV else []
 
 
 def die_with_parent(parent_pid: int) -> None:
@@ -135,14 +106,11 @@ class RunningProcess:
             children.append(child_fd)
         me = os.getpid()
         args = ['/bin/sh', '-c', ' '.join(self._cmd)] if self._shell else list(self._cmd)
-        wrapper = death_signal_wrapper()
-        if wrapper:
-            self._check_executable(args[0])  # report a missing executable as Popen would
         try:
             self._popen = subprocess.Popen(
-                wrapper + args, cwd=self._cwd, env=self._env,
+                args, cwd=self._cwd, env=self._env,
                 stdin=subprocess.PIPE, stdout=children[0], stderr=children[1],
-                preexec_fn=None if wrapper else (lambda: die_with_parent(me)), close_fds=True)
+                preexec_fn=lambda: die_with_parent(me), close_fds=True)
         except BaseException:
             for fd in parents:
                 os.close(fd)
@@ -160,17 +128,6 @@ class RunningProcess:
             self._loop.add_reader(fd, self._read, fd)
         self._spawned_fds = []
         self._watch_exit()
-
-    def _check_executable(self, executable: str) -> None:
-        """Raise FileNotFoundError as Popen would, since setpriv would only exit 127."""
-        if os.sep in executable:
-            path = executable if self._cwd is None or os.path.isabs(executable) \
-                else os.path.join(self._cwd, executable)
-            if os.path.isfile(path) and os.access(path, os.X_OK):
-                return
-        elif shutil.which(executable, path=self._env.get('PATH', os.defpath)) is not None:
-            return
-        raise FileNotFoundError(2, 'No such file or directory', executable)
 
     def _watch_exit(self) -> None:
         try:

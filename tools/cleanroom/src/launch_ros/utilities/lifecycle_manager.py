@@ -2,7 +2,10 @@
 
 - ChangeState events whose matcher picks our action are queued and sent,
   in order, to `<node>/change_state` by a worker thread that first waits
-  for the service (the node may still be starting).
+  for the service (the node may still be starting) and for our
+  transition_event subscription to be matched: the node publishes each
+  transition once (volatile), so a subscription that is not connected yet
+  would miss the first StateTransition.
 - Every message on `<node>/transition_event` becomes a StateTransition
   event, handed to the launch loop with the thread-safe emit_event_sync.
 """
@@ -44,6 +47,7 @@ class LifecycleManager:
         self.__logger = get_logger('launch_ros.actions.lifecycle_node')
         self.__client: Any = None
         self.__adapter: Any = None
+        self.__connected = threading.Event()
 
     @property
     def node_name(self) -> str:
@@ -58,11 +62,19 @@ class LifecycleManager:
         name = self.node_name
         self.__client = node.create_client(lifecycle_msgs.srv.ChangeState,
                                            f'{name}/change_state')
-        node.create_subscription(lifecycle_msgs.msg.TransitionEvent,
-                                 f'{name}/transition_event', self._on_transition_event, 10)
+        from rclpy.event_handler import SubscriptionEventCallbacks
+
+        node.create_subscription(
+            lifecycle_msgs.msg.TransitionEvent, f'{name}/transition_event',
+            self._on_transition_event, 10,
+            event_callbacks=SubscriptionEventCallbacks(matched=self._on_matched))
         self.__context.register_event_handler(
             _CallbackHandler(ChangeState, self._on_change_state))
         self.__adapter.start_worker(self._work, f'lifecycle {name}')
+
+    def _on_matched(self, info: Any) -> None:
+        if info.current_count > 0:
+            self.__connected.set()
 
     def _on_transition_event(self, msg: Any) -> None:
         # emit_event_sync is thread-safe: it wakes the launch loop from this
@@ -86,6 +98,9 @@ class LifecycleManager:
         import lifecycle_msgs.srv
 
         while not self.__client.wait_for_service(timeout_sec=_SERVICE_POLL):
+            if stopped.is_set():
+                return
+        while not self.__connected.wait(_SERVICE_POLL):
             if stopped.is_set():
                 return
         request = lifecycle_msgs.srv.ChangeState.Request()
