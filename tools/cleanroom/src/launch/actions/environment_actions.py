@@ -2,10 +2,11 @@
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING, List, MutableMapping
 
 from ..action import Action
 from ..substitution import Substitution
+from ._scoped_store_actions import SetInStore, UnsetInStore
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -18,50 +19,18 @@ def _subs(value: object) -> List[Substitution]:
     return normalize_to_list_of_substitutions(value)
 
 
-class SetEnvironmentVariable(Action):
+class SetEnvironmentVariable(SetInStore):
     """Set variable `name` to `value` for processes started later in this scope."""
 
-    def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType,
-                 **kwargs: object) -> None:
-        super().__init__(**kwargs)
-        self.__name = _subs(name)
-        self.__value = _subs(value)
-
-    @property
-    def name(self) -> List[Substitution]:
-        """The variable name, as substitutions."""
-        return self.__name
-
-    @property
-    def value(self) -> List[Substitution]:
-        """The value, as substitutions."""
-        return self.__value
-
-    def execute(self, context: LaunchContext) -> None:
-        """Set it."""
-        from ..utilities import perform_substitutions
-
-        context.environment[perform_substitutions(context, self.__name)] = \
-            perform_substitutions(context, self.__value)
+    def _store(self, context: LaunchContext) -> MutableMapping[str, str]:
+        return context.environment
 
 
-class UnsetEnvironmentVariable(Action):
+class UnsetEnvironmentVariable(UnsetInStore):
     """Remove variable `name` for processes started later in this scope."""
 
-    def __init__(self, name: SomeSubstitutionsType, **kwargs: object) -> None:
-        super().__init__(**kwargs)
-        self.__name = _subs(name)
-
-    @property
-    def name(self) -> List[Substitution]:
-        """The variable name, as substitutions."""
-        return self.__name
-
-    def execute(self, context: LaunchContext) -> None:
-        """Unset it."""
-        from ..utilities import perform_substitutions
-
-        context.environment.pop(perform_substitutions(context, self.__name), None)
+    def _store(self, context: LaunchContext) -> MutableMapping[str, str]:
+        return context.environment
 
 
 class AppendEnvironmentVariable(Action):
