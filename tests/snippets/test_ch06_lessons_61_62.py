@@ -25,7 +25,8 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node as RclpyNode
 from rclpy.parameter import parameter_value_to_python
 from textbook import paths
-from textbook.myst import fences
+
+from ._shown_snippets import launch_files_included_by
 
 LESSONS = [paths.LESSONS / "ch06/L1/01_anatomy_of_a_launch_file.md",
            paths.LESSONS / "ch06/L1/02_parameters_in_launch_files.md"]
@@ -210,21 +211,11 @@ def test_mistake_is_reported_and_launch_ends(case: Case, code: int | None, expec
         assert proc.returncode == code, out
 
 
-def _launch_files_included_by(lesson) -> set[tuple[str, str]]:
-    found = set()
-    for fence in fences(lesson.read_text()):
-        target = fence.argument.partition("#")[0]
-        if fence.directive == "snippet" and target.endswith(".launch.py"):
-            package, _, name = target.partition("/launch/")
-            found.add((package, name))
-    return found
-
-
 @pytest.mark.parametrize("lesson", LESSONS, ids=lambda p: p.name)
 def test_every_launch_file_a_lesson_shows_is_tested(lesson):
     tested = {(case.package, case.launch_file) for case in RUNNING}
     tested |= {(case.package, case.launch_file) for case, _, _ in FAILING}
-    shown = _launch_files_included_by(lesson)
+    shown = launch_files_included_by(lesson)
     assert shown, f"{lesson.name} shows no launch file"
     assert shown <= tested, f"launch files shown but not tested: {sorted(shown - tested)}"
 

@@ -17,7 +17,8 @@ from typing import Any
 import labkit
 import pytest
 from textbook import paths
-from textbook.myst import fences
+
+from ._shown_snippets import launch_files_included_by
 
 LESSONS = [paths.LESSONS / "ch06/L1/03_launch_arguments_and_substitutions.md",
            paths.LESSONS / "ch06/L1/04_packaging_launch_and_config_files.md"]
@@ -180,20 +181,10 @@ def test_show_args_lists_defaults_descriptions_and_choices(ros_env):
     ]
 
 
-def _launch_files_included_by(lesson) -> set[tuple[str, str]]:
-    found = set()
-    for fence in fences(lesson.read_text()):
-        target = fence.argument.partition("#")[0]
-        if fence.directive == "snippet" and target.endswith(".launch.py"):
-            package, _, name = target.partition("/launch/")
-            found.add((package, name))
-    return found
-
-
 @pytest.mark.parametrize("lesson", LESSONS, ids=lambda p: p.name)
 def test_every_launch_file_a_lesson_shows_is_tested(lesson):
     tested = {(case.package, case.launch_file) for case in RUNNING}
-    shown = _launch_files_included_by(lesson)
+    shown = launch_files_included_by(lesson)
     assert shown, f"{lesson.name} shows no launch file"
     assert shown <= tested, f"launch files shown but not tested: {sorted(shown - tested)}"
 

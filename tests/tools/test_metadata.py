@@ -9,19 +9,9 @@ import yaml
 from textbook.lessons import LessonError, load, load_all
 from textbook.metadata import MetadataError
 
-GOOD = {
-    "id": "ch06-demo",
-    "title": "A demo lesson",
-    "chapter": 6,
-    "layer": "L1",
-    "duration_minutes": 15,
-    "proficiency": "B1",
-    "hardware_tier": 1,
-    "tier_1_path": "Runs on a laptop.",
-    "learning_objectives": ["Do a thing"],
-    "skills": ["ros2 run"],
-    "prerequisites": [],
-}
+from ._lesson_files import META
+
+GOOD = META
 
 
 def write_lesson(root, meta, name="demo.md", chapter="ch06", layer="L1", body=None):
