@@ -9,6 +9,7 @@ import subprocess
 import sys
 
 import pytest
+import yaml
 from textbook import paths
 
 SUITE = paths.ROOT.parent / "shared" / "conformance"
@@ -19,10 +20,10 @@ pytestmark = [
 ]
 
 
-def run_check(script: str, tmp_path) -> str:
+def run_check(script: str, tmp_path, *extra: str) -> str:
     result = subprocess.run(
         [sys.executable, str(SUITE / script), "--python", sys.executable,
-         "--workdir", str(tmp_path), "-v"],
+         "--workdir", str(tmp_path), "-v", *extra],
         cwd=tmp_path, env=dict(os.environ), capture_output=True, text=True, timeout=1700)
     return result.stdout + result.stderr
 
@@ -60,6 +61,20 @@ def test_launch_api_conformance(tmp_path):
     assert re.findall(r"^FAIL (\S+): (.+) differ$", out, re.M) == [(RACE_CASE, "processes")], out
     want, got = _verbose_processes(out, "want"), _verbose_processes(out, "got")
     assert _swap_racing_numbers(got) == want, out
+
+
+def test_launch_error_lines_conformance(tmp_path):
+    """Every [ERROR] line of launch* loggers in the error cases, as Jazzy printed them."""
+    out = run_check("check.py", tmp_path, "--suite", str(SUITE / "errors"))
+    cases = len(yaml.safe_load((SUITE / "errors" / "cases.yaml").read_text()))
+    assert f"{cases} passed, 0 failed" in out, out
+
+
+def test_frontends_conformance(tmp_path):
+    """The XML and YAML launch files (and their errors), as Jazzy ran them."""
+    out = run_check("check.py", tmp_path, "--suite", str(SUITE / "frontends"))
+    cases = len(yaml.safe_load((SUITE / "frontends" / "cases.yaml").read_text()))
+    assert f"{cases} passed, 0 failed" in out, out
 
 
 def test_ros2_cli_conformance(tmp_path):

@@ -26,7 +26,7 @@ def format_entities(entities: List[LaunchDescriptionEntity]) -> str:
 
 def format_launch_description(launch_description: LaunchDescription) -> str:
     """Return the description as an indented tree, one entity per line."""
-    out = [launch_description.describe()]
+    out = [object.__repr__(launch_description)]  # Jazzy's first line: the object's repr
     _tree(launch_description, '', out, 0)
     return '\n'.join(out)
 

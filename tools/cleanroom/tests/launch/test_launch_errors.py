@@ -76,8 +76,13 @@ def test_required_argument_at_top_level(run_launch):
 def test_invalid_choice(run_launch):
     result = run_launch([DeclareLaunchArgument('mode', default_value='sim',
                                                choices=['sim', 'real'])], argv=('mode:=fly',))
-    assert _error(result) == ('Argument "mode" provided value "fly" is not valid. '
-                              "Valid options are: ['sim', 'real']")
+    refusal = ('Argument "mode" provided value "fly" is not valid. '
+               "Valid options are: ['sim', 'real']")
+    assert _error(result) == refusal
+    # Jazzy first logs the refusal under the action's own logger (errors/ golden 26).
+    error_lines = [line for line in result.output.splitlines() if line.startswith('[ERROR]')]
+    assert error_lines == ['[ERROR] [launch.actions.declare_launch_argument]: ' + refusal,
+                           PREFIX + refusal]
     with pytest.raises(RuntimeError, match='not in provided choices'):
         DeclareLaunchArgument('mode', default_value='x', choices=['a'])
 

@@ -135,7 +135,8 @@ def test_include_arguments_stay_set_after_the_include(run_launch, tmp_path):
                                    f'scoped 1 {child}', 'end: kid']
 
 
-def test_this_launch_file_comes_back_to_the_parent(run_launch, tmp_path):
+def test_this_launch_file_after_an_include_names_the_included_file(run_launch, tmp_path):
+    # Jazzy does not restore the locals after an include (frontends golden 33_xml_include).
     child = _child_file(tmp_path)
     parent = tmp_path / 'parent.launch.py'
     parent.write_text(textwrap.dedent(f'''
@@ -153,7 +154,7 @@ def test_this_launch_file_comes_back_to_the_parent(run_launch, tmp_path):
             ])
     '''))
     result = run_launch([IncludeLaunchDescription(PythonLaunchDescriptionSource(str(parent)))])
-    assert result.user_lines() == [f'child 3 {child}', f'parent {parent}', f'timer {parent}']
+    assert result.user_lines() == [f'child 3 {child}', f'parent {child}', f'timer {child}']
 
 
 def test_timer_actions_keep_the_scope_they_were_declared_in(run_launch):

@@ -5,6 +5,7 @@ import os
 import shutil
 import sys
 
+import launch.logging
 import pytest
 from launch import LaunchContext
 from launch.conditions import InvalidConditionExpressionError
@@ -160,6 +161,7 @@ def test_this_launch_file_outside_a_file(context):
 
 
 def test_launch_log_dir_is_below_ros_log_dir(context):
+    launch.logging.reset()  # another test on this worker may have made its folder already
     log_dir = LaunchLogDir().perform(context)
     assert log_dir.startswith(os.environ['ROS_LOG_DIR'])
     assert os.path.isdir(log_dir)

@@ -15,7 +15,7 @@ from launch_ros.substitutions import Parameter as ParameterSubstitution
 PKG = 'lr_test_pkg'
 
 
-def test_globals_come_first_and_are_scoped(test_package, run_launch):
+def test_globals_come_first_and_a_scoped_group_appends_to_the_outer_list(test_package, run_launch):
     wildcard = PathJoinSubstitution([FindPackageShare(PKG), 'config', 'wildcard.yaml'])
     record = run_launch([
         SetParameter(name='use_sim_time', value=True),
@@ -38,8 +38,15 @@ def test_globals_come_first_and_are_scoped(test_package, run_launch):
     assert cmd[12] == '--params-file'
     assert cmd[13]['content'] == {'/fleet/member': {'ros__parameters': {'level': 4}}}
     assert cmd[14:] == ['-r', 'chatter:=news', '-r', '/tf:=tf']
-    assert record.node_cmd('outsider')[1:] == [
-        '--ros-args', '-r', '__node:=outsider', '-p', 'use_sim_time:=True']
+    # Jazzy appends to the list of global parameters in place: the list made at the
+    # top is shared with the scoped group, so the group's additions reach the outsider
+    # (frontends golden 32_xml_groups); remaps made only inside the group do not.
+    outsider = record.node_cmd('outsider')
+    assert outsider[1:8] == ['--ros-args', '-r', '__node:=outsider', '-p', 'use_sim_time:=True',
+                             '-p', 'level:=3']
+    assert outsider[8] == '--params-file'
+    assert outsider[9]['path'] == cmd[11]['path']
+    assert len(outsider) == 10
 
 
 def test_unscoped_group_leaks_globals(test_package, run_launch):

@@ -1,4 +1,6 @@
-"""ROS substitutions and the errors launch reports with Jazzy's text (goldens 22, 23, 28)."""
+"""ROS substitutions and the errors launch reports with Jazzy's text (goldens 22, 23, 27, 28)."""
+import re
+
 import pytest
 from ament_index_python.packages import PackageNotFoundError
 from launch import LaunchContext
@@ -64,3 +66,25 @@ def test_errors_end_the_launch_with_jazzys_text(test_package, run_launch, capfd,
     assert record.returncode == 1
     assert record.processes == []
     assert ERROR_PREFIX + message(test_package) in out.out + out.err
+
+
+def test_node_name_that_fails_to_expand_is_named_first(test_package, run_launch, capfd):
+    """Jazzy logs which Node failed before the launch error (errors/ golden 27)."""
+    record = run_launch([Node(package=PKG, executable='noop', name=LaunchConfiguration('robot'),
+                              namespace='fleet')])
+    out = capfd.readouterr().out
+    errors = [line for line in out.splitlines() if line.startswith('[ERROR]')]
+    assert record.returncode == 1
+    assert len(errors) == 2, out
+    assert re.fullmatch(
+        r"\[ERROR\] \[launch_ros\.actions\.node\]: Error while expanding or validating "
+        rf"node name or namespace for 'package={PKG}, executable=noop, "
+        r"name=<[\w.]+\.LaunchConfiguration object at 0x[0-9a-f]+>, namespace=fleet':",
+        errors[0])
+    assert errors[1] == ERROR_PREFIX + "launch configuration 'robot' does not exist"
+
+
+def test_node_that_expands_logs_no_error(test_package, run_launch, capfd):
+    record = run_launch([Node(package=PKG, executable='noop', name='fine')])
+    assert record.returncode == 0
+    assert '[ERROR]' not in capfd.readouterr().out

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Iterable, List, Optional
 
 from ..action import Action
+from ..logging import get_logger
 from ..substitution import Substitution
 
 if TYPE_CHECKING:
@@ -80,5 +81,8 @@ class DeclareLaunchArgument(Action):
                 perform_substitutions(context, self.__default_value)
         value = context.launch_configurations[self.__name]
         if self.__choices is not None and value not in self.__choices:
-            raise RuntimeError(f'Argument "{self.__name}" provided value "{value}" is not valid. '
-                               f'Valid options are: {self.__choices}')
+            message = (f'Argument "{self.__name}" provided value "{value}" is not valid. '
+                       f'Valid options are: {self.__choices}')
+            # Jazzy logs the refusal under this action's logger before raising (errors/ 26).
+            get_logger('launch.actions.declare_launch_argument').error(message)
+            raise RuntimeError(message)

@@ -234,10 +234,18 @@ class ExecuteProcess(Action):
         return self.__output_handler.cached(2) if self.__output_handler is not None else ''
 
     def describe(self) -> str:
-        """Return a description of the command."""
+        """`ExecuteProcess(cmd=[...], cwd=None, env=None, shell=False)`, as `ros2 launch -p`."""
         def join(subs: SubstitutionsList) -> str:
             return ' + '.join(s.describe() for s in subs)
-        return f"ExecuteProcess(cmd=[{', '.join(join(c) for c in self.__cmd)}])"
+        cmd = ', '.join(join(c) for c in self._described_cmd())
+        cwd = None if self.__cwd is None else join(self.__cwd)
+        env = None if self.__env is None else \
+            '{' + ', '.join(f'{join(k)}: {join(v)}' for k, v in self.__env) + '}'
+        return f'ExecuteProcess(cmd=[{cmd}], cwd={cwd}, env={env}, shell={self.__shell})'
+
+    def _described_cmd(self) -> List[SubstitutionsList]:
+        """The command as described before execution (Node adds its name arguments)."""
+        return self.__cmd
 
     def describe_conditional_sub_entities(
             self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:

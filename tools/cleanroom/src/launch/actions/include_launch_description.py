@@ -9,7 +9,6 @@ from ..launch_description import LaunchDescription
 from ..launch_description_entity import LaunchDescriptionEntity
 from ..launch_description_source import LaunchDescriptionSource
 from ..substitution import Substitution
-from .scope_actions import PopLocals, PushLocals
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -95,7 +94,10 @@ class IncludeLaunchDescription(Action):
             local_values = {'current_launch_file_path': location,
                             'launch_file_path': location,
                             'current_launch_file_directory': os.path.dirname(location)}
-        return [PushLocals(local_values), description, PopLocals()]
+        # Not popped afterwards: as in Jazzy, $(dirname) / ThisLaunchFileDir after an
+        # include name the included file's folder (frontends golden 33_xml_include).
+        context.extend_locals(local_values)
+        return [description]
 
     @staticmethod
     def __check_required_arguments(description: LaunchDescription, given: List[str]) -> None:

@@ -23,26 +23,27 @@ if TYPE_CHECKING:
 
 
 class _RestoreScope(Action):
-    """Put back the configurations and environment a timer saw when it was started."""
+    """Put back the configurations a timer saw when it was started.
 
-    def __init__(self, configurations: Dict, environment: Dict) -> None:
+    The environment is not restored: as in Jazzy, the timer's actions see the
+    environment of when it fires (frontends golden 34_xml_executable_timer).
+    """
+
+    def __init__(self, configurations: Dict) -> None:
         super().__init__()
         self.__configurations = configurations
-        self.__environment = environment
 
     def execute(self, context: LaunchContext) -> None:
         context.launch_configurations.clear()
         context.launch_configurations.update(self.__configurations)
-        context.environment.clear()
-        context.environment.update(self.__environment)
 
 
 class TimerAction(Action):
     """After `period` seconds, visit `actions` as if they were where the timer is.
 
-    The launch configurations, environment and locals (e.g. the current
-    launch file) of the timer's scope are saved when it starts and restored
-    for its actions (e.g. a namespace
+    The launch configurations and locals (e.g. the current launch file) of
+    the timer's scope are saved when it starts and restored for its actions
+    (the environment is the one of when it fires) (e.g. a namespace
     pushed in an enclosing group still applies).  The timer is cancelled on
     shutdown unless `cancel_on_shutdown=False`.
     """
@@ -113,7 +114,7 @@ class TimerAction(Action):
         if self.__canceled:
             self.__future.set_result(None)
             return None
-        saved = (dict(context.launch_configurations), dict(context.environment))
+        saved = (dict(context.launch_configurations),)
         entities = [PushLaunchConfigurations(), PushEnvironment(),
                     PushLocals(context.get_locals_as_dict()), _RestoreScope(*saved),
                     *self.__actions, PopLocals(), PopEnvironment(), PopLaunchConfigurations()]

@@ -1,37 +1,39 @@
-"""Load a launch file of any supported format (here: Python)."""
+"""Load a launch file of any supported format: Python, or a front end (XML, YAML)."""
 from __future__ import annotations
 
 import os
+from typing import Callable, List, Type
 
+from ..frontend.load_errors import InvalidFrontendLaunchFileError, describe_load_errors
+from ..frontend.parser import Parser
 from ..invalid_launch_file_error import InvalidLaunchFileError
 from ..launch_description import LaunchDescription
+from .frontend_launch_file_utilities import get_launch_description_from_frontend_launch_file
 from .python_launch_file_utilities import get_launch_description_from_python_launch_file
 
-FRONTEND_FAILURE = 'The launch file may have a syntax error, or its format is unknown'
+__all__ = ['InvalidFrontendLaunchFileError', 'get_launch_description_from_any_launch_file']
 
 
-class InvalidFrontendLaunchFileError(InvalidLaunchFileError):
-    """No XML/YAML frontend could parse the file."""
+def get_launch_description_from_any_launch_file(
+        launch_file_path: str, *, parser: Type[Parser] = Parser) -> LaunchDescription:
+    """Try the loader the extension suggests first, then the other; report every failure.
 
-
-def get_launch_description_from_any_launch_file(launch_file_path: str) -> LaunchDescription:
-    """Try the loaders that fit the extension; report every failure if all fail.
-
-    The clean room has no XML/YAML frontend, so after Python the frontend
-    attempt always fails, as Jazzy's does for a file it cannot parse.
+    `.py` files are tried as Python, then as a front end; anything else the
+    other way round.  When both fail the error lists one ' - Type: message'
+    line per loader (Jazzy's "Caught multiple exceptions ..." text).
     """
+    def frontend(path: str) -> LaunchDescription:
+        return get_launch_description_from_frontend_launch_file(path, parser=parser)
+
     extension = os.path.splitext(launch_file_path)[1].lstrip('.')
-    errors = []
-    if extension == 'py':
+    loaders: List[Callable[[str], LaunchDescription]] = [
+        get_launch_description_from_python_launch_file, frontend]
+    if extension != 'py':
+        loaders.reverse()
+    errors: List[BaseException] = []
+    for loader in loaders:
         try:
-            return get_launch_description_from_python_launch_file(launch_file_path)
-        except Exception as exc:  # noqa: BLE001 - reported below with the others
-            errors.append(exc)
-    errors.append(InvalidFrontendLaunchFileError(FRONTEND_FAILURE))
-    if len(errors) == 1:
-        raise InvalidLaunchFileError(
-            f'Caught exception when trying to load file of format [{extension}]: '
-            f'{FRONTEND_FAILURE}')
-    lines = [f'Caught multiple exceptions when trying to load file of format [{extension}]:']
-    lines += [f' - {type(exc).__name__}: {exc}' for exc in errors]
-    raise InvalidLaunchFileError('\n'.join(lines)) from errors[0]
+            return loader(launch_file_path)
+        except Exception as error:  # noqa: BLE001 - every failure is reported below
+            errors.append(error)
+    raise InvalidLaunchFileError(describe_load_errors(extension, errors)) from errors[0]

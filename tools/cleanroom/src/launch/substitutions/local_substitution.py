@@ -29,8 +29,8 @@ class LocalSubstitution(Substitution):
         return self.__description
 
     def describe(self) -> str:
-        """Return the description or the expression."""
-        return self.__description or f"LocalVar('{self.__expression}')"
+        """`LocalVar('<description or expression>')`, as `ros2 launch -p` shows it."""
+        return f"LocalVar('{self.__description or self.__expression}')"
 
     def perform(self, context: LaunchContext) -> str:
         """Evaluate `context.locals.<expression>` and return its str()."""

@@ -14,6 +14,7 @@ from typing import Any, Optional
 from launch import LaunchContext
 from launch.actions import ExecuteProcess
 from launch.logging import get_logger
+from launch.substitutions import LocalSubstitution
 from launch.utilities import normalize_to_list_of_substitutions
 
 from ..substitutions import ExecutableInPackage
@@ -59,6 +60,10 @@ class Node(ExecuteProcess):
             cmd += ['--ros-args', *ros_arguments]
         super().__init__(cmd=cmd, name=exec_name, **kwargs)
         self.__base_cmd = list(self.cmd)
+        # What `ros2 launch -p` shows before execution (recorded Jazzy output).
+        self.__described_name_args = [] if name is None else [
+            '--ros-args', '-r',
+            LocalSubstitution("ros_specific_arguments['name']", description='node name')]
         self.__package = package
         self.__executable = executable
         self.__node_name = None if name is None else normalize_to_list_of_substitutions(name)
@@ -72,6 +77,9 @@ class Node(ExecuteProcess):
         self.__final_node_name: Optional[str] = None
         self.__expanded_remappings: Optional[list[tuple[str, str]]] = None
         self.__logger = get_logger(_logger_name)
+        # Named, as given, in the error Jazzy logs when name or namespace fail to expand.
+        self.__given_identity = (f'package={package}, executable={executable}, '
+                                 f'name={name}, namespace={namespace}')
 
     # -- Jazzy's read-only properties -------------------------------------------------
     @property
@@ -154,7 +162,13 @@ class Node(ExecuteProcess):
         return None
 
     def _ros_command_tail(self, context: LaunchContext) -> list[str]:
-        name, namespace = self._expand_name_and_namespace(context)
+        try:
+            name, namespace = self._expand_name_and_namespace(context)
+        except Exception:
+            # Jazzy logs which node failed before the launch reports the exception (errors/ 27).
+            self.__logger.error('Error while expanding or validating node name or namespace '
+                                f"for '{self.__given_identity}':")
+            raise
         parameters = self._parameter_arguments(context, name, namespace)
         own_remaps = evaluate_remap_rules(context, self.__remappings)
         self.__expanded_remappings = global_remaps(context) + own_remaps
@@ -162,6 +176,11 @@ class Node(ExecuteProcess):
             add_node_name(context, self.__final_node_name)
         return ros_specific_arguments(name=name, namespace=namespace, parameters=parameters,
                                       remappings=self.__expanded_remappings)
+
+    def _described_cmd(self) -> list[Any]:
+        """The command `ros2 launch -p` prints: the node name arguments are still placeholders."""
+        return self.__base_cmd + [normalize_to_list_of_substitutions(arg)
+                                  for arg in self.__described_name_args]
 
     def execute(self, context: LaunchContext) -> Optional[list[Any]]:
         ensure_cleanup_registered(context)

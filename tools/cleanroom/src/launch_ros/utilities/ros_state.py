@@ -29,7 +29,14 @@ def global_params(context: LaunchContext) -> list[Any]:
 
 
 def add_global_param(context: LaunchContext, item: Any) -> None:
-    context.launch_configurations[GLOBAL_PARAMS_KEY] = global_params(context) + [item]
+    """Append in place, as Jazzy does: a list that exists outside a scoped group is
+    shared with it, so a SetParameter inside the group leaks out (frontends golden
+    32_xml_groups); a list first created inside the group does not (golden 17)."""
+    params = context.launch_configurations.get(GLOBAL_PARAMS_KEY)
+    if params is None:
+        context.launch_configurations[GLOBAL_PARAMS_KEY] = [item]
+    else:
+        params.append(item)
 
 
 def global_remaps(context: LaunchContext) -> list[tuple[str, str]]:

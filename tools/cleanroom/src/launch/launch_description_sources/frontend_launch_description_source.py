@@ -1,0 +1,25 @@
+"""A LaunchDescription loaded from a front-end (XML, YAML) launch file."""
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Type
+
+from ..frontend.parser import Parser
+from ..launch_description import LaunchDescription
+from ..launch_description_source import LaunchDescriptionSource
+from .frontend_launch_file_utilities import get_launch_description_from_frontend_launch_file
+
+if TYPE_CHECKING:
+    from ..some_substitutions_type import SomeSubstitutionsType
+
+
+class FrontendLaunchDescriptionSource(LaunchDescriptionSource):
+    """Load `launch_file_path` (text or substitutions) with a front-end parser."""
+
+    def __init__(self, launch_file_path: SomeSubstitutionsType, *,
+                 method: str = 'interpreted frontend launch file',
+                 parser: Type[Parser] = Parser) -> None:
+        super().__init__(None, launch_file_path, method)
+        self.__parser = parser
+
+    def _get_launch_description(self, location: str) -> LaunchDescription:
+        return get_launch_description_from_frontend_launch_file(location, parser=self.__parser)

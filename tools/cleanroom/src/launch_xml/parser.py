@@ -1,0 +1,25 @@
+"""The XML front end: `.launch.xml` files."""
+from __future__ import annotations
+
+import io
+import xml.etree.ElementTree as ET
+from typing import Set, TextIO, Tuple, Union
+
+from launch import frontend
+
+from .entity import Entity
+
+
+class Parser(frontend.Parser):
+    """Reads XML with xml.etree; its errors (ParseError) reach the user unchanged."""
+
+    @classmethod
+    def load(cls, file: Union[str, TextIO]) -> Tuple[Entity, Parser]:
+        """Return the root entity of the XML file and a parser for it."""
+        source = file if isinstance(file, str) else io.StringIO(file.read())
+        return Entity(ET.parse(source).getroot()), cls()
+
+    @classmethod
+    def get_file_extensions(cls) -> Set[str]:
+        """xml."""
+        return {'xml'}
