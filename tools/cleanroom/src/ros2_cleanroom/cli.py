@@ -10,12 +10,16 @@ import importlib
 import sys
 
 VERBS = {
+    'doctor': 'Check ROS setup and other potential issues',
     'launch': 'Run a launch file',
     'node': 'Various node related sub-commands',
     'param': 'Various param related sub-commands',
     'run': 'Run a package specific executable',
     'topic': 'Various topic related sub-commands',
+    'wtf': 'Use `wtf` as alias to `doctor`',
 }
+#: Commands that run another command's module.
+ALIASES = {'wtf': 'doctor'}
 
 
 def usage() -> str:
@@ -39,7 +43,7 @@ def main(argv: list[str] | None = None) -> int:
         print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
               f"invalid choice: '{verb}' (choose from {choices})", file=sys.stderr)
         return 2
-    module = importlib.import_module('ros2_cleanroom.verbs.' + verb)
+    module = importlib.import_module('ros2_cleanroom.verbs.' + ALIASES.get(verb, verb))
     return module.main(rest)
 
 

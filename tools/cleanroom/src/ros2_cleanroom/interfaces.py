@@ -72,6 +72,24 @@ def message_to_data(msg: Any, truncate_length: int | None = TRUNCATE_LENGTH,
     return _plain_scalar(msg)
 
 
+def message_to_csv(msg: Any, truncate_length: int | None = TRUNCATE_LENGTH,
+                   no_arr: bool = False, no_str: bool = False) -> str:
+    """The line `ros2 topic echo --csv` prints: every field in order, comma-separated.
+
+    As rosidl_runtime_py does: nested messages and arrays are flattened into
+    the line, an empty array still takes its (empty) place, strings are not quoted.
+    """
+    return _csv(message_to_data(msg, truncate_length, no_arr, no_str))
+
+
+def _csv(data: Any) -> str:
+    if isinstance(data, dict):
+        return ','.join(_csv(value) for value in data.values())
+    if isinstance(data, list):
+        return ','.join(_csv(item) for item in data)
+    return str(data)
+
+
 def _is_sequence(value: Any) -> bool:
     if isinstance(value, (list, tuple, array.array)):
         return True

@@ -23,6 +23,24 @@ _FIELDS = {
     ParameterType.PARAMETER_STRING_ARRAY: ('string_array_value', 'String values are'),
 }
 
+# ParameterType constant -> the word `ros2 param list --param-type` prints.
+_TYPE_NAMES = {
+    ParameterType.PARAMETER_BOOL: 'boolean',
+    ParameterType.PARAMETER_INTEGER: 'integer',
+    ParameterType.PARAMETER_DOUBLE: 'double',
+    ParameterType.PARAMETER_STRING: 'string',
+    ParameterType.PARAMETER_BYTE_ARRAY: 'byte array',
+    ParameterType.PARAMETER_BOOL_ARRAY: 'boolean array',
+    ParameterType.PARAMETER_INTEGER_ARRAY: 'integer array',
+    ParameterType.PARAMETER_DOUBLE_ARRAY: 'double array',
+    ParameterType.PARAMETER_STRING_ARRAY: 'string array',
+}
+
+
+def type_name(value: ParameterValue) -> str:
+    """`double array` etc.: the type a parameter value has, in `--param-type` words."""
+    return _TYPE_NAMES.get(value.type, 'not set')
+
 
 def to_python(value: ParameterValue) -> Any:
     """The plain Python value (arrays as lists); None when the parameter is not set."""

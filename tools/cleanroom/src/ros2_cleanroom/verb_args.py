@@ -10,6 +10,8 @@ import argparse
 import sys
 from collections.abc import Callable
 
+from ros2_cleanroom.cli import usage
+
 Handler = Callable[[argparse.Namespace], int]
 
 
@@ -42,7 +44,9 @@ def add_spin_time(parser: argparse.ArgumentParser) -> None:
 
 def run(parser: argparse.ArgumentParser, argv: list[str]) -> int:
     """Parse `argv` and run the chosen verb; no verb prints the help."""
-    args = parser.parse_args(argv)
+    args, unknown = parser.parse_known_args(argv)
+    if unknown:
+        return unrecognized_arguments(unknown)
     handler = getattr(args, 'handler', None)
     if handler is None:
         parser.print_help()
@@ -54,6 +58,17 @@ def run(parser: argparse.ArgumentParser, argv: list[str]) -> int:
     except BrokenPipeError:  # e.g. `ros2 topic echo /x | head -n 3`
         sys.stdout = None  # nothing more can be written; skip the flush at exit
         return 0
+
+
+def unrecognized_arguments(unknown: list[str]) -> int:
+    """Reject options a verb does not have (e.g. `param dump --output-dir`).
+
+    ros2cli parses the whole command line with its top-level `ros2` parser,
+    so it is that parser that reports them: its usage line, exit code 2.
+    """
+    print(usage().splitlines()[0], file=sys.stderr)
+    print(f"ros2: error: unrecognized arguments: {' '.join(unknown)}", file=sys.stderr)
+    return 2
 
 
 def fail(message: str) -> int:

@@ -79,10 +79,14 @@ def start_node(cli_env: dict[str, str]) -> Iterator[Callable[..., subprocess.Pop
 
 @pytest.fixture(scope='module')
 def ros2(cli_env: dict[str, str]) -> Callable[..., subprocess.CompletedProcess]:
-    """Run `ros2 ARGS...` in the module's domain and return its result (text)."""
-    def run(*args: str, timeout: float = 30.0) -> subprocess.CompletedProcess:
-        return subprocess.run([ROS2, *args], env=cli_env, capture_output=True, text=True,
-                              timeout=timeout)
+    """Run `ros2 ARGS...` in the module's domain and return its result (text).
+
+    `env` adds variables for this one command (e.g. PYTHONWARNINGS).
+    """
+    def run(*args: str, timeout: float = 30.0,
+            env: dict[str, str] | None = None) -> subprocess.CompletedProcess:
+        return subprocess.run([ROS2, *args], env={**cli_env, **(env or {})},
+                              capture_output=True, text=True, timeout=timeout)
     return run
 
 

@@ -12,6 +12,7 @@ import rclpy
 from geometry_msgs.msg import Twist
 from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
+from rclpy.qos import QoSProfile, ReliabilityPolicy
 from std_msgs.msg import String
 
 
@@ -63,8 +64,34 @@ def layered() -> Node:
     return node
 
 
+def qos_publisher() -> Node:
+    """Best-effort publisher on /qos_topic: half of the QoS mismatch of lesson 6.7."""
+    node = Node('qos_publisher')
+    qos = QoSProfile(depth=10, reliability=ReliabilityPolicy.BEST_EFFORT)
+    publisher = node.create_publisher(String, 'qos_topic', qos)
+    node.create_timer(0.1, lambda: publisher.publish(String(data='x')))
+    return node
+
+
+def qos_subscriber() -> Node:
+    """Reliable subscription on /qos_topic: it never receives from the best-effort publisher."""
+    node = Node('qos_subscriber')
+    qos = QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE)
+    node.create_subscription(String, 'qos_topic', lambda msg: None, qos)
+    return node
+
+
+def lonely_talker() -> Node:
+    """Publishes on /lonely, which nobody subscribes to."""
+    node = Node('lonely_talker')
+    publisher = node.create_publisher(String, 'lonely', 10)
+    node.create_timer(0.1, lambda: publisher.publish(String(data='anyone?')))
+    return node
+
+
 KINDS = {'talker': talker, 'listener': listener, 'twister': twister,
-         'params': params, 'layered': layered}
+         'params': params, 'layered': layered, 'qos_publisher': qos_publisher,
+         'qos_subscriber': qos_subscriber, 'lonely_talker': lonely_talker}
 
 
 def main() -> None:

@@ -66,8 +66,17 @@ def test_info_of_unknown_node_fails(ros2):
     assert result.stderr == "Unable to find node '/nope'\n"
 
 
-@pytest.mark.parametrize('args', [['bogus'], ['info'], ['list', '--bogus']])
+@pytest.mark.parametrize('args', [['bogus'], ['info']])
 def test_bad_arguments_are_usage_errors(ros2, args):
     result = ros2('node', *args)
     assert result.returncode == 2
     assert result.stderr.startswith('usage: ros2 node')
+
+
+def test_unknown_option_is_reported_by_the_top_level_parser(ros2):
+    """ros2cli parses the whole line with its `ros2` parser, which rejects leftovers."""
+    result = ros2('node', 'list', '--bogus')
+    assert (result.returncode, result.stdout) == (2, '')
+    assert result.stderr.splitlines() == [
+        'usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...',
+        'ros2: error: unrecognized arguments: --bogus']

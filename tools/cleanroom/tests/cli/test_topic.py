@@ -5,8 +5,11 @@ import re
 import signal
 
 import pytest
+from ros2_cleanroom.interfaces import message_to_csv
 from ros2_cleanroom.rate_window import RateWindow
+from std_msgs.msg import Float64MultiArray
 
+STRING_HASH = 'RIHS01_df668c740482bbd48fb39d76a70dfd4bd59db1288021743503259e948f6b1a18'
 RATE_BLOCK = re.compile(r'average rate: (\d+\.\d{3})\n'
                         r'\tmin: \d+\.\d{3}s max: \d+\.\d{3}s std dev: \d+\.\d{5}s window: (\d+)')
 
@@ -41,6 +44,74 @@ def test_info_counts_other_nodes_endpoints(ros2):
 def test_info_of_unknown_topic_fails(ros2):
     result = ros2('topic', 'info', '/nope')
     assert (result.returncode, result.stdout, result.stderr) == (1, '', "Unknown topic '/nope'\n")
+
+
+def endpoint_block(node: str, kind: str, reliability: str = 'RELIABLE') -> str:
+    """The regex of one endpoint of `topic info -v` (the GID differs every run)."""
+    return re.escape(
+        f'Node name: {node}\n'
+        'Node namespace: /\n'
+        'Topic type: std_msgs/msg/String\n'
+        f'Topic type hash: {STRING_HASH}\n'
+        f'Endpoint type: {kind}\n') + r'GID: (?:[0-9a-f]{2}\.){15}[0-9a-f]{2}\n' + re.escape(
+        'QoS profile:\n'
+        f'  Reliability: {reliability}\n'
+        '  History (Depth): UNKNOWN\n'
+        '  Durability: VOLATILE\n'
+        '  Lifespan: Infinite\n'
+        '  Deadline: Infinite\n'
+        '  Liveliness: AUTOMATIC\n'
+        '  Liveliness lease duration: Infinite\n\n')
+
+
+def test_info_verbose_lists_each_endpoint_with_qos(ros2):
+    result = ros2('topic', 'info', '-v', '/chatter')
+    assert result.returncode == 0
+    expected = (re.escape('Type: std_msgs/msg/String\n\nPublisher count: 1\n\n')
+                + endpoint_block('sensor_publisher', 'PUBLISHER')
+                + re.escape('Subscription count: 1\n\n')
+                + endpoint_block('listener', 'SUBSCRIPTION'))
+    assert re.fullmatch(expected, result.stdout), result.stdout
+
+
+def test_info_verbose_of_unknown_topic_fails(ros2):
+    result = ros2('topic', 'info', '--verbose', '/nope')
+    assert (result.returncode, result.stdout, result.stderr) == (1, '', "Unknown topic '/nope'\n")
+
+
+def test_echo_csv_prints_field_values_per_line(ros2):
+    result = ros2('topic', 'echo', '--csv', '/chatter', '--once')
+    assert result.returncode == 0
+    assert re.fullmatch(r'hello \d+\n', result.stdout), result.stdout
+
+
+def test_echo_csv_flattens_nested_messages(ros2):
+    result = ros2('topic', 'echo', '--csv', '/cmd_vel', '--once')
+    assert (result.returncode, result.stdout) == (0, '0.5,0.0,0.0,0.0,0.0,-1.25\n')
+
+
+def test_csv_keeps_the_place_of_an_empty_array():
+    msg = Float64MultiArray(data=[1.0, 2.5])  # layout: dim=[] (empty), data_offset=0
+    assert message_to_csv(msg) == ',0,1.0,2.5'
+    assert message_to_csv(Float64MultiArray(data=[0.5] * 3), truncate_length=2) == \
+        ',0,0.5,0.5,...'
+
+
+def test_echo_timeout_without_messages_prints_nothing(ros2):
+    result = ros2('topic', 'echo', '--csv', '/parameter_events', '--once', '--timeout', '2')
+    assert (result.returncode, result.stdout, result.stderr) == (0, '', '')
+
+
+def test_echo_timeout_ends_a_stream_of_messages(ros2):
+    result = ros2('topic', 'echo', '--csv', '/chatter', '--timeout', '2')
+    lines = result.stdout.splitlines()
+    assert (result.returncode, result.stderr) == (0, '')
+    assert len(lines) > 1 and all(re.fullmatch(r'hello \d+', line) for line in lines), lines
+
+
+def test_echo_filter_selects_messages(ros2):
+    result = ros2('topic', 'echo', '/chatter', '--once', '--filter', 'm.data.endswith("7")')
+    assert re.fullmatch(r'data: hello \d*7\n---\n', result.stdout), result.stdout
 
 
 def test_echo_once_prints_one_yaml_message(ros2):
@@ -112,8 +183,15 @@ def test_rate_window_report_format():
     assert window.report() == 'no new messages'
 
 
-@pytest.mark.parametrize('args', [['bogus'], ['echo'], ['hz', '/chatter', '-w', 'x']])
+@pytest.mark.parametrize('args', [['bogus'], ['echo'], ['hz', '/chatter', '-w', 'x'],
+                                  ['echo', '/chatter', '--timeout', 'x'], ['info']])
 def test_bad_arguments_are_usage_errors(ros2, args):
     result = ros2('topic', *args)
     assert result.returncode == 2
     assert result.stderr.startswith('usage: ros2 topic')
+
+
+def test_doctor_passes_on_a_healthy_graph(ros2):
+    """Every topic here has a publisher and a subscriber with matching QoS."""
+    result = ros2('doctor')
+    assert (result.returncode, result.stdout, result.stderr) == (0, '\nAll 3 checks passed\n\n', '')

@@ -14,6 +14,8 @@ import os
 import sys
 from typing import List, Optional, Tuple
 
+from ros2_cleanroom.verb_args import unrecognized_arguments
+
 
 class CommandError(Exception):
     """An error reported on stderr with exit code 1, before anything is launched."""
@@ -142,7 +144,9 @@ def launch_a_launch_file(path: str, arguments: List[Tuple[str, str]], *, debug: 
 
 def main(argv: List[str]) -> int:
     """Entry point of `ros2 launch`; returns the exit code."""
-    args = _parser().parse_args(argv)
+    args, unknown = _parser().parse_known_args(argv)
+    if unknown:  # reported by ros2cli's top-level parser, as for every verb
+        return unrecognized_arguments(unknown)
     try:
         path, raw_arguments = resolve_launch_file(args)
         arguments = parse_launch_arguments(raw_arguments)

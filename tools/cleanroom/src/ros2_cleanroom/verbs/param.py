@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import re
+import sys
 
 from rclpy.node import Node
 
@@ -21,6 +22,8 @@ def build_parser() -> argparse.ArgumentParser:
                          help='Only list parameters with the provided prefixes')
     listing.add_argument('--filter', default=None,
                          help='Only list parameters whose name matches this regular expression')
+    listing.add_argument('--param-type', action='store_true',
+                         help='Print parameter types with parameter names')
     add_spin_time(listing)
 
     get = add_verb(verbs, 'get', 'Get parameter', get_param)
@@ -80,17 +83,27 @@ def list_params(args: argparse.Namespace) -> int:
         for target in targets:
             try:
                 names = param_client.list_names(node, target, args.param_prefixes)
+                names = [n for n in names if not pattern or pattern.search(n)]
+                if args.param_type:
+                    names = _with_types(node, target, names)
             except param_client.ParameterServiceError as error:
                 if args.node_name:
                     return fail(str(error))
                 continue  # a node without parameter services is left out
-            listings.append((target, [n for n in names if not pattern or pattern.search(n)]))
+            listings.append((target, names))
     for target, names in listings:
         if not args.node_name:
             print(f'{target}:')
         for name in names:
             print(f'  {name}')
     return 0
+
+
+def _with_types(node: Node, target: str, names: list[str]) -> list[str]:
+    """`name (type: double)` for each name, as `--param-type` lists them."""
+    values = param_client.get_values(node, target, names) if names else []
+    return [f'{name} (type: {param_values.type_name(value)})'
+            for name, value in zip(names, values, strict=True)]
 
 
 def get_param(args: argparse.Namespace) -> int:
@@ -121,12 +134,13 @@ def set_param(args: argparse.Namespace) -> int:
             result = param_client.set_value(node, target, args.parameter_name, value)
         except param_client.ParameterServiceError as error:
             return fail(str(error))
+    # Jazzy reports a refused value on stderr but still exits 0.
     if result.successful:
         print('Set parameter successful')
     elif result.reason:
-        print(f'Setting parameter failed: {result.reason}')
+        print(f'Setting parameter failed: {result.reason}', file=sys.stderr)
     else:
-        print('Setting parameter failed')
+        print('Setting parameter failed', file=sys.stderr)
     return 0
 
 

@@ -14,7 +14,12 @@ from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
 from ros2_cleanroom.cli_node import is_hidden
-from ros2_cleanroom.interfaces import import_interface, message_to_data, message_to_yaml
+from ros2_cleanroom.interfaces import (
+    import_interface,
+    message_to_csv,
+    message_to_data,
+    message_to_yaml,
+)
 from ros2_cleanroom.rate_window import RateWindow
 from ros2_cleanroom.topic_qos import add_qos_arguments, subscription_qos
 from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fail, run
@@ -36,6 +41,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     info = add_verb(verbs, 'info', 'Print information about a topic', topic_info)
     info.add_argument('topic_name', help="Name of the ROS topic to get info (e.g. '/chatter')")
+    info.add_argument('-v', '--verbose', action='store_true',
+                      help='Prints detailed information like the node name, node namespace, '
+                           'topic type, topic type hash, GUID, and QoS Profile of the '
+                           'publishers and subscribers to this topic')
     add_spin_time(info)
 
     echo = add_verb(verbs, 'echo', 'Output messages from a topic', echo_topic)
@@ -44,6 +53,13 @@ def build_parser() -> argparse.ArgumentParser:
                       help="Type of the ROS message (e.g. 'std_msgs/msg/String')")
     echo.add_argument('--once', action='store_true',
                       help='Print the first message received and then exit')
+    echo.add_argument('--csv', action='store_true',
+                      help='Output all recursive fields separated by commas (e.g. for plotting)')
+    echo.add_argument('--filter', dest='filter_expr', default=None,
+                      help='Python expression to filter messages that are printed. Expression '
+                           'can use Python builtins as well as m (the message).')
+    echo.add_argument('--timeout', type=float, default=None,
+                      help='Stop echoing after this many seconds (exit code 0)')
     echo.add_argument('--field', default=None,
                       help='Echo a selected field of a message, e.g. linear.x')
     echo.add_argument('-f', '--full-length', action='store_true',
@@ -83,10 +99,14 @@ def _topics(node: Node, include_hidden: bool) -> list[tuple[str, list[str]]]:
                   if include_hidden or not is_hidden(name))
 
 
-def _count(node: Node, infos: list[Any]) -> int:
+def _others(node: Node, infos: list[Any]) -> list[Any]:
     """Endpoints of other nodes: the command's own node is not part of the system."""
     own = (node.get_name(), node.get_namespace())
-    return sum(1 for info in infos if (info.node_name, info.node_namespace) != own)
+    return [info for info in infos if (info.node_name, info.node_namespace) != own]
+
+
+def _count(node: Node, infos: list[Any]) -> int:
+    return len(_others(node, infos))
 
 
 def list_topics(args: argparse.Namespace) -> int:
@@ -125,12 +145,24 @@ def topic_info(args: argparse.Namespace) -> int:
         types = dict(_topics(node, True)).get(topic)
         if types is None:
             return fail(f"Unknown topic '{topic}'")
-        publishers = _count(node, node.get_publishers_info_by_topic(topic))
-        subscribers = _count(node, node.get_subscriptions_info_by_topic(topic))
+        publishers = _others(node, node.get_publishers_info_by_topic(topic))
+        subscribers = _others(node, node.get_subscriptions_info_by_topic(topic))
+    if args.verbose:
+        print(topic_info_verbose(types, publishers, subscribers), end='')
+        return 0
     print(f"Type: {'; '.join(types)}")
-    print(f'Publisher count: {publishers}')
-    print(f'Subscription count: {subscribers}')
+    print(f'Publisher count: {len(publishers)}')
+    print(f'Subscription count: {len(subscribers)}')
     return 0
+
+
+def topic_info_verbose(types: list[str], publishers: list[Any], subscribers: list[Any]) -> str:
+    """`topic info -v`: each endpoint with its QoS, a blank line after every block."""
+    blocks = [f"Type: {'; '.join(types)}", f'Publisher count: {len(publishers)}']
+    blocks += [str(info) for info in publishers]  # rclpy's TopicEndpointInfo text
+    blocks.append(f'Subscription count: {len(subscribers)}')
+    blocks += [str(info) for info in subscribers]
+    return ''.join(block + '\n\n' for block in blocks)
 
 
 def _resolve_type(node: Node, topic: str, given: str | None) -> type:
@@ -171,9 +203,11 @@ def _select_field(msg: Any, field: str | None) -> Any:
 
 
 def format_message(msg: Any, args: argparse.Namespace) -> str:
-    """One echoed message as YAML, without the trailing `---`."""
+    """One echoed message as YAML without the trailing `---`, or one `--csv` line."""
     value = _select_field(msg, args.field)
     truncate = None if args.full_length else args.truncate_length
+    if args.csv:
+        return message_to_csv(value, truncate, args.no_arr, args.no_str) + '\n'
     if hasattr(value, 'get_fields_and_field_types'):
         return message_to_yaml(value, truncate, args.no_arr, args.no_str, args.flow_style)
     data = message_to_data(value, truncate, args.no_arr, args.no_str)
@@ -204,8 +238,20 @@ def _stop_on_sigterm() -> None:
     signal.signal(signal.SIGTERM, _interrupt)
 
 
+def _message_filter(expression: str | None) -> Callable[[Any], bool]:
+    """`--filter 'm.data != ""'`: a predicate on the message `m`."""
+    if not expression:
+        return lambda msg: True
+    code = compile(expression, '<filter>', 'eval')
+    return lambda msg: bool(eval(code, {}, {'m': msg}))  # noqa: S307 - the user's own expression
+
+
 def echo_topic(args: argparse.Namespace) -> int:
     topic = _absolute(args.topic_name)
+    try:
+        accept = _message_filter(args.filter_expr)
+    except SyntaxError as error:
+        return fail(f"argument --filter: invalid expression '{args.filter_expr}': {error.msg}")
     _stop_on_sigterm()
     with cli_node.cli_node() as node:
         cli_node.wait_until(node, lambda: bool(node.get_publishers_info_by_topic(topic)),
@@ -222,16 +268,23 @@ def echo_topic(args: argparse.Namespace) -> int:
             if args.once and received[0]:
                 return
             try:
+                if not accept(msg):
+                    return
                 text = format_message(msg, args)
-            except RuntimeError as error:
+            except Exception as error:  # noqa: BLE001 - a bad field or a failing --filter
                 errors.append(str(error))
                 return
             received[0] += 1
-            sys.stdout.write(text + '---\n')
+            sys.stdout.write(text if args.csv else text + '---\n')
             sys.stdout.flush()
 
         node.create_subscription(msg_type, topic, on_message, subscription_qos(node, topic, args))
-        _spin(node, lambda: bool(errors) or (args.once and received[0] > 0))
+        deadline = None if args.timeout is None else time.monotonic() + args.timeout
+
+        def timed_out() -> bool:  # --timeout bounds the whole echo, messages or not
+            return deadline is not None and time.monotonic() >= deadline
+
+        _spin(node, lambda: bool(errors) or (args.once and received[0] > 0) or timed_out())
     return fail(errors[0]) if errors else 0
 
 
