@@ -1,0 +1,138 @@
+"""pytest plugin of launch_pytest (registered through the pytest11 entry point).
+
+It acts only on tests marked `@pytest.mark.launch(...)`; every other test of a
+session is left alone.
+"""
+from __future__ import annotations
+
+import inspect
+
+import pytest
+
+from .fixture import fixture_name
+from .launch_runner import LaunchRunner, runner_of
+
+MARKER = 'launch'
+
+
+def pytest_configure(config: pytest.Config) -> None:
+    config.addinivalue_line(
+        'markers',
+        'launch(fixture, shutdown=False): run the test while the launch of the given '
+        'launch_pytest fixture runs, or after it shut down when shutdown=True')
+
+
+def _is_marked(obj: object, module: object = None) -> bool:
+    marks = list(getattr(obj, 'pytestmark', [])) + list(getattr(module, 'pytestmark', []))
+    return any(getattr(mark, 'name', None) == MARKER for mark in marks)
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_pycollect_makeitem(collector, name: str, obj: object):
+    """Collect generator tests marked launch (pytest refuses plain yield tests)."""
+    if not (inspect.isgeneratorfunction(obj) or inspect.isasyncgenfunction(obj)):
+        return None
+    if not collector.istestfunction(obj, name):
+        return None
+    if not _is_marked(obj, getattr(collector, 'module', None)):
+        return None
+    return list(collector._genfunctions(name, obj))
+
+
+def _is_shutdown_test(item: pytest.Item) -> bool:
+    marker = item.get_closest_marker(MARKER)
+    return marker is not None and bool(marker.kwargs.get('shutdown', False))
+
+
+def _launch_fixture_name(item: pytest.Item) -> str:
+    marker = item.get_closest_marker(MARKER)
+    target = marker.kwargs.get('fixture', marker.args[0] if marker.args else None)
+    name = fixture_name(target)
+    if name is None:
+        raise pytest.UsageError(
+            f'{item.nodeid}: @pytest.mark.launch needs fixture=<a launch_pytest.fixture>')
+    return name
+
+
+def pytest_collection_modifyitems(session, config, items) -> None:
+    """Set up each marked test's launch fixture; shutdown tests after the others of a module."""
+    marked = [item for item in items if item.get_closest_marker(MARKER) is not None]
+    if not marked:
+        return  # a session without launch tests is left exactly as it was
+    for item in marked:
+        name = _launch_fixture_name(item)
+        if name not in item.fixturenames:
+            item.fixturenames.append(name)
+    module_order = {}
+    for index, item in enumerate(items):
+        module_order.setdefault(getattr(item, 'path', None), index)
+    order = {id(item): index for index, item in enumerate(items)}
+    items.sort(key=lambda item: (module_order[getattr(item, 'path', None)],
+                                 _is_shutdown_test(item), order[id(item)]))
+
+
+def _runner(request: pytest.FixtureRequest, item: pytest.Item) -> LaunchRunner:
+    if item.get_closest_marker(MARKER) is None:
+        pytest.fail(f'{item.nodeid}: launch_service and launch_context need '
+                    '@pytest.mark.launch(fixture=...)', pytrace=False)
+    name = _launch_fixture_name(item)
+    runner = runner_of(request.getfixturevalue(name))
+    if runner is None:
+        pytest.fail(f"{item.nodeid}: fixture '{name}' is not a launch_pytest.fixture",
+                    pytrace=False)
+    return runner
+
+
+@pytest.fixture
+def launch_service(request: pytest.FixtureRequest):
+    """The LaunchService running the test's launch fixture."""
+    return _runner(request, request.node).service
+
+
+@pytest.fixture
+def launch_context(request: pytest.FixtureRequest):
+    """The LaunchContext of the test's launch."""
+    return _runner(request, request.node).context
+
+
+@pytest.hookimpl(tryfirst=True)
+def pytest_pyfunc_call(pyfuncitem: pytest.Function):
+    """Run a marked test against its launch: while it runs, or after it stopped."""
+    if pyfuncitem.get_closest_marker(MARKER) is None:
+        return None
+    runner = _runner(pyfuncitem._request, pyfuncitem)
+    function = pyfuncitem.obj
+    kwargs = {name: pyfuncitem.funcargs[name] for name in pyfuncitem._fixtureinfo.argnames}
+    if not runner.finished.is_set():
+        runner.wait_until_ready()
+    if _is_shutdown_test(pyfuncitem):
+        runner.stop()
+    if inspect.iscoroutinefunction(function):
+        runner.run_coroutine(function(**kwargs))
+    elif inspect.isasyncgenfunction(function):
+        generator = function(**kwargs)
+        runner.run_coroutine(generator.__anext__())
+        runner.stop()
+        _finish_async(runner, generator, pyfuncitem)
+    elif inspect.isgeneratorfunction(function):
+        generator = function(**kwargs)
+        next(generator)
+        runner.stop()
+        try:
+            next(generator)
+        except StopIteration:
+            pass
+        else:
+            pytest.fail(f'{pyfuncitem.nodeid}: a launch test must yield only once',
+                        pytrace=False)
+    else:
+        function(**kwargs)
+    return True
+
+
+def _finish_async(runner: LaunchRunner, generator, item: pytest.Item) -> None:
+    try:
+        runner.run_coroutine(generator.__anext__())
+    except StopAsyncIteration:
+        return
+    pytest.fail(f'{item.nodeid}: a launch test must yield only once', pytrace=False)

@@ -1,0 +1,124 @@
+"""WaitForTopics: wait until messages arrived on every one of some topics.
+
+It uses its own rclpy context, node and executor thread, so it works whether
+or not the test called rclpy.init() itself.
+"""
+from __future__ import annotations
+
+import collections
+import threading
+import uuid
+from typing import Callable, Deque, Dict, Iterable, List, Optional, Set, Tuple
+
+import rclpy
+from rclpy.executors import SingleThreadedExecutor
+from rclpy.node import Node
+
+
+class WaitForTopics:
+    """Wait to receive messages on the given (topic name, message type) pairs.
+
+        with WaitForTopics([('chatter', String)], timeout=5.0):
+            ...  # each topic received at least one message
+
+    or `w = WaitForTopics(...); assert w.wait(); ...; w.shutdown()`.
+    """
+
+    def __init__(self, topic_tuples: Iterable[Tuple[str, type]], timeout: float = 5.0,
+                 messages_received_buffer_length: int = 10,
+                 trigger: Optional[Callable] = None, node_namespace: Optional[str] = None,
+                 qos_profile=10) -> None:
+        self.topic_tuples = list(topic_tuples)
+        self.timeout = timeout
+        self.trigger = trigger
+        self.node_namespace = node_namespace
+        self._qos_profile = qos_profile
+        self._buffer_length = messages_received_buffer_length
+        self._lock = threading.Lock()
+        self._all_received = threading.Event()
+        self._received: Dict[str, Deque] = {}
+        self._expected: Set[str] = {name for name, _ in self.topic_tuples}
+        self._context: Optional[rclpy.Context] = None
+        self._node: Optional[Node] = None
+        self._executor: Optional[SingleThreadedExecutor] = None
+        self._thread: Optional[threading.Thread] = None
+
+    def _start(self) -> None:
+        self._context = rclpy.Context()
+        self._context.init()
+        kwargs = {'context': self._context}
+        if self.node_namespace:
+            kwargs['namespace'] = self.node_namespace
+        self._node = Node(f'_wait_for_topics_{uuid.uuid4().hex[:12]}', **kwargs)
+        for name, message_type in self.topic_tuples:
+            self._node.create_subscription(message_type, name, self._callback_for(name),
+                                           self._qos_profile)
+        self._executor = SingleThreadedExecutor(context=self._context)
+        self._executor.add_node(self._node)
+        self._thread = threading.Thread(target=self._spin, name='wait_for_topics', daemon=True)
+        self._thread.start()
+
+    def _spin(self) -> None:
+        try:
+            self._executor.spin()
+        except Exception:  # noqa: BLE001 - the context was shut down under the executor
+            pass
+
+    def _callback_for(self, name: str) -> Callable:
+        def callback(message) -> None:
+            with self._lock:
+                buffer = self._received.setdefault(
+                    name, collections.deque(maxlen=self._buffer_length))
+                buffer.append(message)
+                if self._expected.issubset(self._received):
+                    self._all_received.set()
+        return callback
+
+    def wait(self, *args, **kwargs) -> bool:
+        """Subscribe, call the trigger (if any), and wait; True when every topic got one."""
+        if self._node is None:
+            self._start()
+        if self.trigger is not None:
+            self.trigger(self._node, *args, **kwargs)
+        return self._all_received.wait(self.timeout)
+
+    def shutdown(self) -> None:
+        """Stop the node and its executor thread."""
+        if self._executor is not None:
+            self._executor.shutdown()
+        if self._node is not None:
+            self._node.destroy_node()
+        if self._context is not None:
+            self._context.try_shutdown()
+        if self._thread is not None:
+            self._thread.join(5.0)
+        self._executor = self._node = self._context = self._thread = None
+
+    def topics_received(self) -> Set[str]:
+        """Topics that received at least one message."""
+        with self._lock:
+            return set(self._received)
+
+    def topics_not_received(self) -> Set[str]:
+        """Topics that did not receive any message."""
+        return self._expected - self.topics_received()
+
+    def received_messages(self, topic_name: str) -> List:
+        """The last messages (up to the buffer length) received on a topic."""
+        if topic_name not in self._expected:
+            raise KeyError(f"'{topic_name}' is not one of the topics being waited for")
+        with self._lock:
+            return list(self._received.get(topic_name, ()))
+
+    messages_received = received_messages
+
+    def __enter__(self) -> WaitForTopics:
+        if not self.wait():
+            missing = ', '.join(sorted(self.topics_not_received()))
+            self.shutdown()
+            raise RuntimeError(f'Did not receive messages on these topics within '
+                               f'{self.timeout} s: {missing}')
+        return self
+
+    def __exit__(self, *exc_info: object) -> None:
+        self.shutdown()

@@ -1,0 +1,2 @@
+def generate_test_description():
+    return ['not', 'a', 'launch description']
