@@ -21,6 +21,40 @@ real_ros_present() {
   command -v ros2 >/dev/null 2>&1 && "$python" -c 'import launch, launch_ros' >/dev/null 2>&1
 }
 
+# The ros-* wheels make .venv a ROS 2 prefix (share/, lib/, include/, like
+# /opt/ros/jazzy).  Two fixes let `colcon build` of an interface package
+# (rosidl_generate_interfaces) use it; both idempotent, only without a real ROS,
+# and both only in the wheels' CMake files (no other process sees a change):
+#  1. the wheels were built with the Python in /opt/python/cp311-cp311, and
+#     their exported CMake files still name its include and site-packages
+#     folders: point those at this interpreter's;
+#  2. ament's CMake looks up the ament index (which typesupports exist, ...)
+#     only in AMENT_PREFIX_PATH, where a sourced /opt/ros/jazzy would be:
+#     search .venv after it.
+make_venv_a_ros_prefix() {
+  local include site index_path
+  include="$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["include"])')"
+  site="$("$venv/bin/python" -c 'import sysconfig; print(sysconfig.get_paths()["purelib"])')"
+  { grep -rlZ --include='*.cmake' '/opt/python/cp311-cp311/' "$venv/share" || true; } \
+    | xargs -0 -r sed -i -e "s#/opt/python/cp311-cp311/include/python3.11#$include#g" \
+        -e "s#/opt/python/cp311-cp311/lib/python3.11/site-packages#$site#g"
+  index_path="$venv/share/ament_cmake_core/cmake/index/ament_index_get_prefix_path.cmake"
+  if [ -f "$index_path" ] && ! grep -q 'tools/setup_env.sh' "$index_path"; then
+    sed -i "/^  set(\${var} \"\${prefix_path}\" PARENT_SCOPE)/i\\
+  list(APPEND prefix_path \"$venv\")  # tools/setup_env.sh: .venv is a ROS 2 prefix" "$index_path"
+  fi
+}
+
+# The browser test of the site (tests/site/test_browser.py) drives Debian's
+# chromium through chromedriver; install them when missing and we may.
+if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+    echo "setup: installing chromium and chromium-driver for the browser test" >&2
+    { apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq \
+        chromium chromium-driver >/dev/null; } || echo "setup: could not install chromium" >&2
+  fi
+fi
+
 if [ -z "${USE_SYSTEM_ROS:-}" ]; then
   if real_ros_present; then USE_SYSTEM_ROS=1; else USE_SYSTEM_ROS=0; fi
 fi
@@ -37,7 +71,7 @@ reqs="$(mktemp)"
 trap 'rm -f "$reqs"' EXIT
 if [ "$USE_SYSTEM_ROS" = 1 ]; then
   "$python" -m venv --system-site-packages "$venv"
-  grep -v -E '^ros-jazzy-' "$root/requirements/base.in" > "$reqs"
+  grep -v -E '^(ros-|cmake$)' "$root/requirements/base.in" > "$reqs"
 else
   "$python" -m venv "$venv"
   cp "$root/requirements/base.in" "$reqs"
@@ -47,6 +81,7 @@ pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root"
 if [ "$USE_SYSTEM_ROS" = 0 ]; then
   "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/cleanroom"
+  make_venv_a_ros_prefix
 fi
 "$venv/bin/python" -m ipykernel install --sys-prefix --name python3 >/dev/null
 echo "$stamp" > "$venv/.setup-stamp"

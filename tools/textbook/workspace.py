@@ -21,16 +21,41 @@ from .fingerprint import hash_paths, hash_text
 
 INSTALL = paths.WORKSPACE / "install"
 
+# Snippets packages that stand in for a ROS package (``share/<name>/HEADLESS``
+# marks our build of one); skipped where the environment has the real one.
+STAND_INS = ("turtlesim",)
+
 
 class WorkspaceBuildError(RuntimeError):
     """colcon failed; the message carries its output."""
 
 
 def workspace_hash(snippets: Path = paths.SNIPPETS) -> str:
-    """Changes whenever a snippet, the pinned packages or the interpreter change."""
+    """Changes whenever a snippet, the pinned packages, the interpreter or the
+    set of stand-ins the environment provides for real change."""
     lock = paths.ROOT / "requirements" / "lock.txt"
     return hash_text(hash_paths([snippets], base=snippets.parent),
-                     lock.read_text() if lock.exists() else "", sys.prefix)
+                     lock.read_text() if lock.exists() else "", sys.prefix,
+                     " ".join(skipped_packages()))
+
+
+def installed_for_real(package: str, env: dict[str, str] | None = None) -> str | None:
+    """The prefix on ``AMENT_PREFIX_PATH`` with a real ``package``, if there is one.
+
+    What ``ros2 pkg prefix`` would find, except our own headless builds.
+    """
+    env = os.environ if env is None else env
+    for prefix in filter(None, env.get("AMENT_PREFIX_PATH", "").split(os.pathsep)):
+        root = Path(prefix)
+        if (root / "share/ament_index/resource_index/packages" / package).is_file() \
+                and not (root / "share" / package / "HEADLESS").exists():
+            return prefix
+    return None
+
+
+def skipped_packages(env: dict[str, str] | None = None) -> list[str]:
+    """Stand-ins not to build: the environment has the real package (never shadow it)."""
+    return [name for name in STAND_INS if installed_for_real(name, env)]
 
 
 @contextmanager
@@ -44,9 +69,11 @@ def _build_lock(workspace: Path):
 def colcon_command(snippets: Path = paths.SNIPPETS,
                    workspace: Path = paths.WORKSPACE) -> list[str]:
     """The colcon call: the student's ``colcon build``, pointed at our folders."""
+    skip = skipped_packages()
     return [str(paths.VENV_BIN / "colcon"), "--log-base", str(workspace / "log"), "build",
             "--base-paths", str(snippets), "--build-base", str(workspace / "build"),
-            "--install-base", str(workspace / "install")]
+            "--install-base", str(workspace / "install"),
+            *(["--packages-skip", *skip] if skip else [])]
 
 
 def ensure_built(snippets: Path = paths.SNIPPETS, workspace: Path = paths.WORKSPACE) -> Path:

@@ -1,0 +1,1 @@
+"""A headless turtlesim: the turtles, their motion and a canvas drawn into a PNG."""
