@@ -1,0 +1,146 @@
+"""The running check: a spec against the ROS graph as it is now.
+
+Reads the graph, parameters and QoS with labkit (rclpy only, so it works
+with a real ROS 2 and with the clean room alike) and measures topic rates
+over a bounded window.
+"""
+from __future__ import annotations
+
+import labkit
+from labkit import qos, rates
+from labkit.graph import GraphSnapshot
+
+from speccheck import values
+from speccheck.report import Finding, Report, Status
+from speccheck.spec import NodeSpec, Spec, TopicSpec
+
+MET, FAILED, NOT_CHECKED = Status.MET, Status.FAILED, Status.NOT_CHECKED
+
+#: Seconds of listening for rate measurements.
+DEFAULT_WINDOW = 3.0
+
+
+def check_live(spec: Spec, window: float = DEFAULT_WINDOW, target: str = 'running system',
+               ) -> Report:
+    """Check the running system against `spec` (rates are measured for `window` seconds)."""
+    snapshot = labkit.graph()
+    findings: list[Finding] = []
+    for node_spec in spec.nodes:
+        findings += _node(node_spec, snapshot)
+    if spec.nodes:
+        others = sorted(set(snapshot.nodes) - {node.name for node in spec.nodes})
+        if others:
+            findings.append(Finding('other nodes', NOT_CHECKED,
+                                    f'running but not in the spec: {", ".join(others)}'))
+    measured = _measure(spec, snapshot, window)
+    for topic in spec.topics:
+        findings += _topic(topic, snapshot, measured)
+    return Report('live', spec.source, target, tuple(findings))
+
+
+def _node(node_spec: NodeSpec, snapshot: GraphSnapshot) -> list[Finding]:
+    requirement = f'node {node_spec.name}'
+    if node_spec.name not in snapshot.nodes:
+        return [Finding(requirement, FAILED,
+                        f'not running; running: {", ".join(snapshot.nodes) or "no nodes"}')]
+    findings = [Finding(requirement, MET, 'running')]
+    if node_spec.parameters is None:
+        return findings
+    try:
+        actual = labkit.read_parameters(node_spec.name)
+    except labkit.LabkitError as error:
+        return [*findings, Finding(f'{requirement}: parameters', FAILED, str(error))]
+    for wanted in node_spec.parameters:
+        name = f'{requirement}: parameter {wanted.name}'
+        if wanted.name not in actual:
+            findings.append(Finding(name, FAILED, 'the node has no such parameter; it has: '
+                                    + ', '.join(sorted(actual))))
+            continue
+        problem = values.judge(wanted, actual[wanted.name])
+        findings.append(Finding(name, FAILED if problem else MET,
+                                problem or f'{values.show(actual[wanted.name])}'))
+    return findings
+
+
+def _measure(spec: Spec, snapshot: GraphSnapshot, window: float) -> dict[str, rates.Rate]:
+    wanted = {topic.name: snapshot.topics[topic.name].types[0] for topic in spec.topics
+              if topic.has_rate and topic.name in snapshot.topics}
+    return rates.measure_rates(wanted, window) if wanted else {}
+
+
+def _topic(topic: TopicSpec, snapshot: GraphSnapshot,
+           measured: dict[str, rates.Rate]) -> list[Finding]:
+    requirement = f'topic {topic.name}'
+    found = snapshot.topics.get(topic.name)
+    if found is None:
+        return [Finding(requirement, FAILED,
+                        f'no node publishes or subscribes to {topic.name}' + _similar(
+                            topic.name, snapshot))]
+    findings = []
+    if topic.type is not None:
+        ok = found.types == (topic.type,)
+        findings.append(Finding(f'{requirement}: type', MET if ok else FAILED,
+                                found.type if ok else
+                                f'{found.type}, the spec says {topic.type}'))
+    for role, names, actual in (('publisher', topic.publishers, found.publishers),
+                                ('subscriber', topic.subscribers, found.subscribers)):
+        for name in names:
+            line = f'{requirement}: {role} {name}'
+            if name in actual:
+                findings.append(Finding(line, MET, f'{name} {role_verb(role)} {topic.name}'))
+            else:
+                findings.append(Finding(line, FAILED, _missing_endpoint(
+                    topic.name, role, name, actual, snapshot)))
+    if topic.has_rate:
+        findings.append(_rate(topic, measured.get(topic.name)))
+    findings += _qos(topic.name)
+    return findings
+
+
+def role_verb(role: str) -> str:
+    return 'publishes' if role == 'publisher' else 'subscribes to'
+
+
+def _missing_endpoint(topic: str, role: str, name: str, actual: tuple[str, ...],
+                      snapshot: GraphSnapshot) -> str:
+    text = f'{topic}: expected {role} {name}, found {", ".join(actual) or "none"}'
+    if name not in snapshot.nodes:
+        return f'{text}; {name} is not running'
+    attr = 'publishers' if role == 'publisher' else 'subscribers'
+    elsewhere = [t.name for t in snapshot.topics.values() if name in getattr(t, attr)]
+    return f'{text}; {name} {role_verb(role)} {", ".join(elsewhere) or "nothing"}'
+
+
+def _similar(topic: str, snapshot: GraphSnapshot) -> str:
+    base = topic.rsplit('/', 1)[1]
+    similar = [name for name in snapshot.topics if name.rsplit('/', 1)[1] == base]
+    return f'; topics with that base name: {", ".join(similar)}' if similar else ''
+
+
+def _rate(topic: TopicSpec, rate: rates.Rate | None) -> Finding:
+    low = '0' if topic.rate_min is None else f'{topic.rate_min:g}'
+    high = 'inf' if topic.rate_max is None else f'{topic.rate_max:g}'
+    requirement = f'topic {topic.name}: rate {low}..{high} Hz'
+    if rate is None or rate.hz is None:
+        count = 0 if rate is None else rate.count
+        window = '' if rate is None else f' in {rate.window:g} s'
+        return Finding(requirement, FAILED, f'{count} message(s){window}: no rate to measure')
+    ok = ((topic.rate_min is None or rate.hz >= topic.rate_min)
+          and (topic.rate_max is None or rate.hz <= topic.rate_max))
+    return Finding(requirement, MET if ok else FAILED,
+                   f'measured {rate.hz:.2f} Hz ({rate.count} messages in {rate.window:g} s)')
+
+
+def _qos(topic: str) -> list[Finding]:
+    publishers, subscribers = qos.endpoints(topic)
+    if not publishers or not subscribers:
+        return []
+    requirement = f'topic {topic}: QoS'
+    problems = qos.mismatches(topic)
+    if not problems:
+        pairs = '; '.join(endpoint.describe() for endpoint in publishers + subscribers)
+        return [Finding(requirement, MET, f'every publisher/subscriber pair compatible: {pairs}')]
+    return [Finding(requirement, FAILED if problem.error else NOT_CHECKED,
+                    f'publisher {problem.publisher.describe()} and subscriber '
+                    f'{problem.subscriber.describe()}: {problem.reason}')
+            for problem in problems]

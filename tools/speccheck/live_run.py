@@ -1,0 +1,34 @@
+"""The running check of a launch file: start it with labkit, check, stop it."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import labkit
+
+from speccheck.live_check import DEFAULT_WINDOW, check_live
+from speccheck.report import Finding, Report, Status
+from speccheck.spec import Spec
+
+
+def check_launch_live(spec: Spec, launch_file: str | Path | tuple[str, str] | None,
+                      arguments: dict[str, str] | None = None, *,
+                      window: float = DEFAULT_WINDOW, timeout: float = 20.0) -> Report:
+    """Start `launch_file` (if given), wait for the spec's nodes, check, and stop it.
+
+    `launch_file` is a path or a (package, file name) pair, as `ros2 launch`
+    takes them.  Without a launch file the system that is running now is checked.
+    """
+    if launch_file is None:
+        return check_live(spec, window)
+    words = launch_file if isinstance(launch_file, tuple) else (str(launch_file),)
+    target = Path(words[-1]).name + ''.join(f' {k}:={v}' for k, v in (arguments or {}).items())
+    with labkit.launch(*words, launch_arguments=arguments or {}) as run:
+        try:
+            run.wait_for_nodes([node.name for node in spec.nodes], timeout=timeout)
+        except labkit.LabkitError as error:
+            return Report('live', spec.source, target,
+                          (Finding('launch', Status.FAILED, str(error)),))
+        report = check_live(spec, window, target)
+        return Report('live', spec.source, target,
+                      (Finding('launch', Status.MET, f'`{run.command}` running'),
+                       *report.findings))
