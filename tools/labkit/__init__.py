@@ -14,6 +14,9 @@ The lessons of this book use a handful of calls::
         print(run.output())           # what the launch printed so far
     # leaving the block stops the launch: Ctrl-C, as in a terminal
 
+Exercises grade the student's own package with `labkit.exercises`
+(`setup`, `solution`, `check`; see EXERCISES.md).
+
 `labkit.launch()` and `labkit.run()` (for `ros2 run`) also work without
 `with`: keep the returned object and call `.stop()` when done.  Whatever
 is still running when the kernel exits is stopped, and a small watchdog
@@ -24,6 +27,7 @@ real ROS 2 install and with this project's clean-room one.  It inherits the
 ROS isolation (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE) of the notebook,
 which the book's build sets for every lesson.
 """
+from labkit import exercises
 from labkit.background import Background
 from labkit.commands import launch, run, start, start_launch
 from labkit.drawing import draw_graph
@@ -32,6 +36,6 @@ from labkit.graph import GraphSnapshot, Topic, graph, read_parameters
 
 __all__ = [
     'Background', 'GraphSnapshot', 'LabkitError', 'NodesNotFoundError', 'ProcessExitedError',
-    'Topic', 'draw_graph', 'graph', 'launch', 'read_parameters', 'run', 'start',
+    'Topic', 'draw_graph', 'exercises', 'graph', 'launch', 'read_parameters', 'run', 'start',
     'start_launch',
 ]

@@ -8,9 +8,18 @@ figure stays within notebook width (:data:`MAX_WIDTH`): a wide graph first
 gets a smaller font, then wraps into bands and grows downwards.  The layout
 is deterministic, so an executed lesson shows the same picture on every
 build.
+
+In a notebook the figure shows itself as a captioned picture
+(:class:`GraphFigure`): an HTML ``<figure>`` whose ``<img>`` has an alt text
+listing every node and connection and is displayed at one scale for every
+graph (:data:`DISPLAY_PX_PER_INCH`), so two graphs on a page compare at a
+glance and labels stay readable at the column width.
 """
 from __future__ import annotations
 
+import base64
+import html
+import io
 from typing import Any
 
 import matplotlib.pyplot as plt
@@ -24,7 +33,8 @@ from matplotlib.transforms import Affine2D
 from labkit.graph_layout import Placement, Spacing, place, without_cycles
 from labkit.graph_paths import FollowPath
 
-__all__ = ['MAX_WIDTH', 'draw_graph', 'layers', 'layout', 'to_networkx', 'without_cycles']
+__all__ = ['DISPLAY_PX_PER_INCH', 'MAX_WIDTH', 'GraphFigure', 'describe', 'draw_graph', 'layers',
+           'layout', 'to_networkx', 'without_cycles']
 
 #: Widest figure, in inches: what a notebook shows without scaling it down.
 MAX_WIDTH = 9.5
@@ -32,6 +42,50 @@ MAX_WIDTH = 9.5
 FONT_SIZES = (9.0, 8.0)
 TITLE_SIZE = 11.0
 TITLE_SPACE = 0.4  # inches above the graph for the title
+#: Screen pixels per figure inch for every graph on a page: MAX_WIDTH fits the
+#: book's content column (874 px), where a 9 pt label is 11.5 px high.
+DISPLAY_PX_PER_INCH = 92
+PNG_DPI = 2 * DISPLAY_PX_PER_INCH  # sharp on high-density screens too
+
+
+class GraphFigure(Figure):
+    """A graph picture that carries its caption and description to the page.
+
+    Jupyter renders the ``text/html`` part of :meth:`_repr_mimebundle_`: a
+    ``<figure>`` with the alt text and a ``<figcaption>``, the width fixed at
+    the book's scale.  ``image/png`` (with ``alt`` metadata) is there for
+    front ends that show no HTML.
+    """
+
+    caption: str = ''
+    description: str = ''
+
+    def png(self) -> bytes:
+        """The picture at exactly the figure's size (no tight bounding box, so
+        every graph keeps the same scale)."""
+        buffer = io.BytesIO()
+        self.savefig(buffer, format='png', dpi=PNG_DPI, facecolor='white')
+        return buffer.getvalue()
+
+    def display_width(self) -> int:
+        """Width in screen pixels at the book's scale."""
+        return round(self.get_figwidth() * DISPLAY_PX_PER_INCH)
+
+    def to_html(self, encoded: str | None = None) -> str:
+        """The captioned ``<figure>``; `encoded` is the base64 PNG if already made."""
+        encoded = encoded or base64.b64encode(self.png()).decode('ascii')
+        return (f'<figure class="ros-graph">'
+                f'<img src="data:image/png;base64,{encoded}" width="{self.display_width()}" '
+                f'alt="{html.escape(self.description)}">'
+                f'<figcaption>{html.escape(self.caption)}</figcaption></figure>')
+
+    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None,
+                          ) -> tuple[dict[str, str], dict[str, Any]]:
+        encoded = base64.b64encode(self.png()).decode('ascii')
+        data = {'text/html': self.to_html(encoded), 'image/png': encoded,
+                'text/plain': f'<ROS graph: {self.caption}>'}
+        metadata = {'image/png': {'alt': self.description, 'width': self.display_width()}}
+        return data, metadata
 
 
 class Ellipse(BoxStyle.Ellipse):
@@ -134,18 +188,45 @@ def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure) -> Placemen
     return plan
 
 
+def describe(graph: nx.DiGraph) -> str:
+    """What the picture shows, in words: the alt text a screen reader reads."""
+    nodes = sorted(v for v in graph if graph.nodes[v]['kind'] == 'node')
+    if not nodes:
+        return 'ROS graph with no nodes.'
+    parts = [f"ROS graph of {len(nodes)} node{'s' * (len(nodes) != 1)}: {', '.join(nodes)}."]
+    for topic in sorted(v for v in graph if graph.nodes[v]['kind'] == 'topic'):
+        publishers = ', '.join(sorted(graph.predecessors(topic))) or 'nobody'
+        subscribers = ', '.join(sorted(graph.successors(topic))) or 'nobody'
+        parts.append(f'Topic {topic} is published by {publishers} and read by {subscribers}.')
+    return ' '.join(parts)
+
+
+def default_caption(graph: nx.DiGraph, title: str | None) -> str:
+    """A caption that says what the picture shows and how to read it."""
+    kinds = [graph.nodes[v]['kind'] for v in graph]
+    nodes, topics = kinds.count('node'), kinds.count('topic')
+    shown = (f"{nodes} node{'s' * (nodes != 1)} (ellipses) and "
+             f"{topics} topic{'s' * (topics != 1)} (boxes); each arrow runs from a "
+             f"publisher to its topic or from a topic to a subscriber")
+    return f'The ROS graph, {title}: {shown}.' if title else f'The ROS graph: {shown}.'
+
+
 def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | None = None,
-               ) -> Figure:
+               caption: str | None = None) -> GraphFigure:
     """Draw the ROS graph and return the matplotlib Figure (shown inline by Jupyter).
 
     With no snapshot, takes one now (`labkit.graph()`).  `show_types=True`
-    writes each topic's message type under its name.
+    writes each topic's message type under its name.  `caption` is the line
+    under the picture on the page (default: what the graph holds, and how to
+    read it); the alt text lists every node and connection.
     """
     if snapshot is None:
         from labkit.graph import graph as take_snapshot
         snapshot = take_snapshot()
     graph = to_networkx(snapshot)
-    figure = plt.figure(figsize=(4.0, 1.0))
+    figure = plt.figure(figsize=(4.0, 1.0), FigureClass=GraphFigure)
+    figure.caption = caption or default_caption(graph, title)
+    figure.description = describe(graph)
     try:  # measuring needs the open figure's canvas
         _draw(figure, graph, show_types, title)
     finally:

@@ -2,9 +2,9 @@
 
 Each execution gets a fresh kernel of the project's interpreter, its own ROS
 domain (isolation.py), the snippets workspace sourced, and a scratch working
-folder shaped like a student's workspace (``src`` -> ``snippets/``).  When
-the kernel is gone, processes the lesson left running are stopped and the
-lesson fails: lessons must clean up after themselves.
+folder shaped like a student's workspace (``src/`` with a copy of each
+book package).  When the kernel is gone, processes the lesson left running
+are stopped and the lesson fails: lessons must clean up after themselves.
 """
 from __future__ import annotations
 
@@ -29,6 +29,8 @@ from .environment import ros_env
 from .isolation import acquire_domain
 from .lessons import Lesson, load
 
+#: labkit.exercises reads it (kept in step with labkit.exercises.APPLY_SOLUTIONS).
+APPLY_SOLUTIONS = "TEXTBOOK_APPLY_SOLUTIONS"
 CELL_TIMEOUT = 180  # seconds; a cell that runs longer is reported as hung
 JOBS = 2
 
@@ -87,10 +89,18 @@ def _failure(lesson: Lesson, notebook: nbformat.NotebookNode, index: int | None,
 
 
 def _workdir(lesson: Lesson, token: str) -> Path:
-    """A fresh folder like ``~/ros2_ws`` with ``src`` pointing at the snippets."""
+    """A fresh folder like ``~/ros2_ws``: ``src/`` holds a copy of every book
+    package of ``snippets/`` and room for the student's own package.
+
+    Copies, not links: a lesson that edits, ``cp -r`` or ``sed -i``s a file in
+    ``src/`` must never change ``snippets/``, and ``ls``/``find`` show plain
+    folders, as in a student's workspace.
+    """
     folder = paths.RUNS / f"{lesson.path.stem}-{token}"
-    folder.mkdir(parents=True)
-    (folder / "src").symlink_to(paths.SNIPPETS, target_is_directory=True)
+    (folder / "src").mkdir(parents=True)
+    for package in sorted(p.parent for p in paths.SNIPPETS.glob("*/package.xml")):
+        shutil.copytree(package, folder / "src" / package.name,
+                        ignore=shutil.ignore_patterns("__pycache__"))
     return folder
 
 
@@ -99,6 +109,9 @@ def execute(lesson: Lesson, timeout: int = CELL_TIMEOUT) -> nbformat.NotebookNod
     notebook = copy.deepcopy(lesson.notebook)
     with acquire_domain() as lease:
         env = ros_env(lease)
+        # The book's build shows every solution passing its check: solution
+        # cells apply the solution and a failing check fails the lesson.
+        env[APPLY_SOLUTIONS] = "1"
         workdir = _workdir(lesson, lease.token)
         current: dict[str, int | None] = {"index": None}
         client = NotebookClient(

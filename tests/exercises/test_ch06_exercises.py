@@ -1,0 +1,134 @@
+"""Every exercise check, proven both ways: it fails on the untouched starter
+and on each catalogued wrong answer (naming the mistake), and passes on the
+book's solution.
+
+One colcon workspace holds one copy of the student's package per case
+(`ex_starter`, `ex_solution`, `ex_wrong_<n>`), built by a single
+`colcon build`; each check then launches its case as a student's terminal
+would.  New exercises and wrong answers are picked up from labkit.checks
+and `snippets/<solutions>/wrong/` without touching this file.
+"""
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from labkit import checks, exercises
+from labkit.grading.student_package import StudentPackage
+from textbook import paths
+
+VERDICT_NAMES = re.compile(r'^# Verdict names: (.+)$', re.MULTILINE)
+
+
+@dataclass(frozen=True)
+class Case:
+    exercise: str
+    kind: str  # 'starter', 'solution' or 'wrong'
+    name: str = ''
+    package: str = ''
+
+    def __str__(self) -> str:
+        return f'{self.exercise}-{self.kind}' + (f'-{self.name}' if self.name else '')
+
+
+def _cases() -> list[Case]:
+    cases = []
+    for exercise in checks.EXERCISES.values():
+        cases.append(Case(exercise.id, 'starter', package='ex_starter'))
+        for number, name in enumerate(exercise.wrong_answers()):
+            cases.append(Case(exercise.id, 'wrong', name, f'ex_wrong_{exercise.id}_{number}'))
+        cases.append(Case(exercise.id, 'solution', package='ex_solution'))
+    return cases
+
+
+CASES = _cases()
+
+
+def _expected_phrases(case: Case) -> list[str]:
+    files = checks.find(case.exercise).wrong_answers()[case.name].values()
+    return [phrase.strip() for f in files for phrase in VERDICT_NAMES.findall(f.read_text())]
+
+
+#: Book packages the exercises' nodes come from, built next to the cases so
+#: the test does not depend on the rest of snippets/.
+BOOK_PACKAGES = ('my_robot_pkg',)
+
+
+@pytest.fixture(scope='module')
+def lesson_environment():
+    """os.environ as in a lesson kernel: this process's ROS domain, the project's
+    tools first on PATH, and no solution applied behind the checks' back."""
+    with pytest.MonkeyPatch.context() as patch:
+        patch.setenv('PATH', f"{paths.VENV_BIN}:{os.environ.get('PATH', '')}")
+        patch.delenv(exercises.APPLY_SOLUTIONS, raising=False)
+        yield
+
+
+@pytest.fixture(scope='module')
+def case_workspace(tmp_path_factory, lesson_environment) -> Path:
+    """All cases (and the book packages they use), built in one colcon build."""
+    workspace = tmp_path_factory.mktemp('exercise_cases')
+    for package in BOOK_PACKAGES:
+        shutil.copytree(paths.SNIPPETS / package, workspace / 'src' / package,
+                        ignore=shutil.ignore_patterns('__pycache__'))
+    ids = list(checks.EXERCISES)
+    exercises.setup(*ids, workspace=workspace, package='ex_starter')
+    exercises.setup(*ids, workspace=workspace, package='ex_solution')
+    for exercise_id in ids:
+        exercises.use_solution(exercise_id, force=True, workspace=workspace,
+                               package='ex_solution')
+    for case in CASES:
+        if case.kind == 'wrong':
+            exercises.setup(*ids, workspace=workspace, package=case.package)
+            answer = checks.find(case.exercise).wrong_answers()[case.name]
+            for relative, source in answer.items():
+                (workspace / 'src' / case.package / relative).write_bytes(source.read_bytes())
+    result = subprocess.run([str(paths.VENV_BIN / 'colcon'), 'build'], cwd=workspace,
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout + result.stderr
+    return workspace
+
+
+def test_every_exercise_has_wrong_answers_that_say_what_the_check_reports():
+    assert checks.EXERCISES
+    for exercise in checks.EXERCISES.values():
+        answers = exercise.wrong_answers()
+        assert answers, f'{exercise.id} has no catalogue of wrong answers'
+        for name in answers:
+            assert _expected_phrases(Case(exercise.id, 'wrong', name)), \
+                f'wrong answer {exercise.id}/{name} has no "# Verdict names: ..." line'
+
+
+@pytest.mark.timeout(900)
+@pytest.mark.parametrize('case', CASES, ids=str)
+def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
+        case: Case, case_workspace: Path, lesson_environment):
+    verdict = checks.find(case.exercise).check(StudentPackage(case_workspace, case.package))
+    report = str(verdict)
+    print(report)  # in the test log: what a student would read
+    if case.kind == 'solution':
+        assert verdict.passed, report
+        return
+    assert not verdict.passed and verdict.problems, report
+    for phrase in _expected_phrases(case) if case.kind == 'wrong' else []:
+        assert phrase in report, f'the verdict should name {phrase!r}:\n{report}'
+
+
+def test_a_file_changed_after_the_build_is_reported_before_anything_runs(
+        case_workspace: Path, lesson_environment):
+    exercise = checks.find('ex61_full_pipeline')
+    source = case_workspace / 'src' / 'ex_starter' / exercise.files[0]
+    original = source.read_bytes()
+    source.write_bytes(original + b'# an edit not built yet\n')
+    try:
+        verdict = exercise.check(StudentPackage(case_workspace, 'ex_starter'))
+    finally:
+        source.write_bytes(original)
+    assert verdict.problems == [
+        'src/ex_starter/launch/ex61_full_pipeline.launch.py is newer than the installed copy: '
+        'run colcon build --packages-select ex_starter']

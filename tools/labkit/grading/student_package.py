@@ -1,0 +1,67 @@
+"""The student's package in their workspace: where its files are, whether the
+installed copy is current, and the environment of `source install/setup.bash`."""
+from __future__ import annotations
+
+import os
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+#: The package every exercise of the book is written in.
+PACKAGE = 'my_ws_exercises'
+
+
+@dataclass(frozen=True)
+class StudentPackage:
+    """`workspace/src/<name>/`, built into `workspace/install/<name>/`."""
+
+    workspace: Path
+    name: str = PACKAGE
+
+    @property
+    def source(self) -> Path:
+        return self.workspace / 'src' / self.name
+
+    @property
+    def share(self) -> Path:
+        return self.workspace / 'install' / self.name / 'share' / self.name
+
+    def shown(self, path: Path) -> str:
+        """`path` relative to the workspace, as a student sees it in a terminal."""
+        try:
+            return str(path.relative_to(self.workspace))
+        except ValueError:
+            return str(path)
+
+    def installed_problem(self, relative: str) -> str | None:
+        """Why `relative` (e.g. 'launch/x.launch.py') is not ready to run, or None.
+
+        Compares contents, not times: after `colcon build` the installed copy
+        equals the source (or links to it with --symlink-install).
+        """
+        source, installed = self.source / relative, self.share / relative
+        if not source.is_file():
+            return (f'{self.shown(source)} does not exist: run '
+                    f'labkit.exercises.setup() to create the starter files')
+        if not installed.is_file():
+            return (f'{self.shown(source)} is not installed (no {self.shown(installed)}): '
+                    f'run colcon build --packages-select {self.name}')
+        if source.read_bytes() != installed.read_bytes():
+            return (f'{self.shown(source)} is newer than the installed copy: '
+                    f'run colcon build --packages-select {self.name}')
+        return None
+
+    def environment(self, base: dict[str, str] | None = None) -> dict[str, str]:
+        """`base` (default: this process's) after `source install/setup.bash`,
+        done by bash itself, as in the student's terminal."""
+        setup = self.workspace / 'install' / 'setup.bash'
+        env = dict(os.environ if base is None else base)
+        if not setup.is_file():
+            return env
+        out = subprocess.run(['bash', '-c', f'source "{setup}" >/dev/null && env -0'],
+                             env=env, check=True, capture_output=True, timeout=60).stdout
+        pairs = (entry.split(b'=', 1) for entry in out.split(b'\0') if b'=' in entry)
+        sourced = {key.decode(): value.decode() for key, value in pairs}
+        for noise in ('_', 'SHLVL', 'PWD', 'OLDPWD'):
+            sourced.pop(noise, None)
+        return sourced
