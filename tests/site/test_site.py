@@ -2,30 +2,13 @@
 from __future__ import annotations
 
 import html
-import os
-import subprocess
-import sys
 
 import nbformat
 import pytest
 from bs4 import BeautifulSoup
-from textbook import paths
 
 # After tests/lessons in the same worker: the build then reuses their results.
 pytestmark = pytest.mark.xdist_group("lessons")
-
-
-@pytest.fixture(scope="session")
-def site(tmp_path_factory):
-    site_dir = tmp_path_factory.mktemp("site")
-    result = subprocess.run(
-        [sys.executable, "-m", "mkdocs", "build", "--strict", "-f", str(paths.MKDOCS_YML),
-         "-d", str(site_dir)],
-        cwd=paths.ROOT, env=dict(os.environ, NO_MKDOCS_2_WARNING="1"),
-        capture_output=True, text=True, timeout=1800)
-    assert result.returncode == 0, result.stdout + result.stderr
-    assert "WARNING" not in result.stderr, result.stderr
-    return site_dir
 
 
 def page_text(site, page: str) -> str:

@@ -27,5 +27,7 @@ def write_lesson(root, body: str, meta=None, name="demo.md"):
              "textbook": meta or META}
     path = root / "ch06" / "L1" / name
     path.parent.mkdir(parents=True, exist_ok=True)
+    if "## Key points" not in body:  # every lesson ends with one (textbook.keypoints)
+        body += "\n## Key points\n\n- A demo.\n"
     path.write_text("---\n" + yaml.safe_dump(front) + "---\n\n" + body)
     return path

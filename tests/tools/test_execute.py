@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import psutil
 import pytest
-from textbook import execute
+from labkit import exercises
+from textbook import execute, paths
 from textbook.lessons import load
 
 from ._lesson_files import code_cells, write_lesson
@@ -15,14 +16,31 @@ def test_outputs_are_recorded_in_an_isolated_sourced_environment(tmp_path):
         "import os\n"
         "print(os.environ['ROS_DOMAIN_ID'], os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'])",
         "%%bash\nros2 pkg prefix my_robot_pkg 2>/dev/null || echo $AMENT_PREFIX_PATH",
-        "%%bash\nls src/")))
+        "%%bash\nls -F src/",
+        "print(os.environ.get('TEXTBOOK_APPLY_SOLUTIONS'))")))
     notebook = execute.execute(lesson)
     outputs = ["".join(o.get("text", "") for o in c.outputs) for c in notebook.cells
                if c.cell_type == "code"]
     domain, discovery = outputs[0].split()
     assert 1 <= int(domain) <= 89 and discovery == "LOCALHOST"
     assert "build/ws/install/my_robot_pkg" in outputs[1]
-    assert "my_robot_pkg" in outputs[2].split()  # the work folder's src/ is snippets/
+    # src/ holds plain folders (copies) of the book's packages, like a student's workspace
+    assert "my_robot_pkg/" in outputs[2].split()
+    assert outputs[3].strip() == "1"  # the book's build applies solutions and fails on a check
+
+
+def test_a_lesson_editing_src_never_changes_snippets(tmp_path):
+    lesson = load(write_lesson(tmp_path, code_cells(
+        "%%bash\necho '# edited by a lesson' >> src/my_robot_pkg/setup.py\n"
+        "mkdir -p src/my_ws_exercises && touch src/my_ws_exercises/package.xml")))
+    before = (paths.SNIPPETS / "my_robot_pkg" / "setup.py").read_bytes()
+    execute.execute(lesson)
+    assert (paths.SNIPPETS / "my_robot_pkg" / "setup.py").read_bytes() == before
+    assert not (paths.SNIPPETS / "my_ws_exercises").exists()
+
+
+def test_the_build_flag_is_the_one_labkit_reads():
+    assert execute.APPLY_SOLUTIONS == exercises.APPLY_SOLUTIONS
 
 
 def test_failing_cell_names_lesson_line_cell_and_error(tmp_path):

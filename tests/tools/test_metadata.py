@@ -22,7 +22,8 @@ def write_lesson(root, meta, name="demo.md", chapter="ch06", layer="L1", body=No
     path = root / chapter / layer / name
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text("---\n" + yaml.safe_dump(front) + "---\n\n"
-                    + (body or "# Demo\n\n```{code-cell} ipython3\nprint('hi')\n```\n"))
+                    + (body or "# Demo\n\n## Key points\n\n"
+                                "```{code-cell} ipython3\nprint('hi')\n```\n"))
     return path
 
 

@@ -4,34 +4,53 @@ from __future__ import annotations
 from types import SimpleNamespace
 
 from bs4 import BeautifulSoup
-from textbook.nav import build_nav
+from textbook.mkdocs_hook import source_edit_url
+from textbook.nav import build_nav, part_pages
 from textbook.render import finish_lesson_html
 
 
 def fake_lesson(chapter, layer, name, title):
-    return SimpleNamespace(meta={"chapter": chapter, "layer": layer}, title=title,
+    return SimpleNamespace(meta={"chapter": chapter, "layer": layer, "duration_minutes": 30,
+                                 "proficiency": "B1"}, title=title,
                            path=SimpleNamespace(name=name),
                            site_path=f"ch{chapter:02d}/{layer}/{name[:-3]}.ipynb")
 
 
-def test_nav_is_chapter_then_layer_then_lesson():
+def test_nav_is_chapter_then_layer_then_lesson_with_a_page_for_each_part():
     nav = build_nav([
         fake_lesson(7, "L1", "00_a.md", "Capstone A"),
-        fake_lesson(6, "L2", "00_b.md", "AI B"),
+        fake_lesson(6, "L2", "08_b.md", "AI B"),
         fake_lesson(6, "L1", "01_c.md", "Second"),
         fake_lesson(6, "L1", "00_d.md", "First"),
-    ])
+    ], glossary="glossary.md")
     assert nav == [
         {"Home": "index.md"},
         {"Chapter 6 · Building Robot Systems": [
-            {"L1 · Manual Foundation": [{"First": "ch06/L1/00_d.ipynb"},
+            "ch06/index.md",
+            {"L1 · Manual Foundation": ["ch06/L1/index.md", {"First": "ch06/L1/00_d.ipynb"},
                                         {"Second": "ch06/L1/01_c.ipynb"}]},
-            {"L2 · AI Collaboration": [{"AI B": "ch06/L2/00_b.ipynb"}]},
+            {"L2 · AI Collaboration": ["ch06/L2/index.md", {"AI B": "ch06/L2/08_b.ipynb"}]},
+            {"L3 · Intelligence Design": ["ch06/L3/index.md"]},
+            {"L4 · Spec-Driven": ["ch06/L4/index.md"]},
         ]},
         {"Chapter 7 · Capstone": [
-            {"L1 · Manual Foundation": [{"Capstone A": "ch07/L1/00_a.ipynb"}]},
+            "ch07/index.md",
+            {"L1 · Manual Foundation": ["ch07/L1/index.md", {"Capstone A": "ch07/L1/00_a.ipynb"}]},
         ]},
+        {"Glossary": "glossary.md"},
     ]
+
+
+def test_layer_page_links_written_lessons_and_names_the_missing_ones():
+    lessons = [fake_lesson(6, "L1", "00_d.md", "First"), fake_lesson(6, "L1", "01_c.md", "Second")]
+    pages = part_pages(lessons)
+    layer = pages["ch06/L1/index.md"]
+    assert "- 6.0 [First](../../ch06/L1/00_d.ipynb) (30 min, level B1)" in layer
+    assert "- 6.7 *(not written yet)*" in layer
+    assert "by hand" in layer
+    assert "- 6.8 *(not written yet)*" in pages["ch06/L2/index.md"]
+    assert "- 7.3 *(not written yet)*" in pages["ch07/index.md"]
+    assert "[L1 · Manual Foundation](L1/index.md)" in pages["ch06/index.md"]
 
 
 def test_snippet_title_moves_into_the_code_block():
@@ -71,3 +90,9 @@ def test_consecutive_solution_cells_fold_into_one_closed_details():
     assert [c.name for c in notebook.find_all(recursive=False)] == \
         ["div", "details", "div", "details"]
     assert not soup.select("details details"), "folds must not nest"
+
+
+def test_edit_link_of_a_lesson_opens_its_markdown_source():
+    assert source_edit_url("https://github.com/o/r/", "edit/main/docs/",
+                           "lessons/ch06/L1/00_a.md") == \
+        "https://github.com/o/r/edit/main/lessons/ch06/L1/00_a.md"

@@ -13,7 +13,7 @@ from typing import Any
 import jupytext
 import nbformat
 
-from . import inline_check, metadata, paths
+from . import inline_check, keypoints, metadata, paths
 from .includes import Snippet, expand
 
 
@@ -62,6 +62,7 @@ def load(path: Path) -> Lesson:
     notebook = jupytext.reads(expanded, fmt="md:myst")
     meta = metadata.validate(notebook.metadata.get("textbook"), source)
     metadata.check_location(meta, path, source)
+    keypoints.check(text, source)
     notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                        "language": "python"}
     notebook.metadata.pop("jupytext", None)

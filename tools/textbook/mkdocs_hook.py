@@ -1,10 +1,15 @@
 """mkdocs hook: lessons become executed notebook pages of the site.
 
-- on_config: read and check every lesson, build the navigation from metadata;
+- on_config: read and check every lesson and the glossary, build the
+  navigation (chapter -> layer -> lesson) from metadata;
 - on_files (before mkdocs-jupyter): build the snippets workspace, execute
   stale lessons (cached by content, two at a time) and add the executed
-  notebooks to the site; mkdocs-jupyter renders them;
-- on_page_content: snippet title bars and folded solutions (render.py).
+  notebooks to the site, with a generated page per chapter and per layer;
+  mkdocs-jupyter renders the notebooks;
+- on_page_content: snippet title bars, folded solutions, header box, Key
+  points box and glossary links (render.py), a TOC that keeps the code of
+  headings (page_toc.py); an image without a description fails the build;
+- on_page_context: "edit this page" of a lesson opens its .md source.
 
 Any failing check or cell fails the build with a message naming the lesson.
 ``mkdocs serve`` watches lessons/ and snippets/, and the cache makes a
@@ -14,28 +19,36 @@ from __future__ import annotations
 
 import logging
 
+from bs4 import BeautifulSoup
 from mkdocs.exceptions import PluginError
 from mkdocs.plugins import event_priority
 from mkdocs.structure.files import File, Files
+from mkdocs.structure.toc import get_toc
+from mkdocs.utils import get_relative_url
 
-from textbook import paths
+from textbook import glossary, paths
 from textbook.execute import LessonExecutionError, publish_all
+from textbook.header import header_html
 from textbook.lessons import Lesson, load_all
-from textbook.nav import build_nav
-from textbook.render import finish_lesson_html
+from textbook.nav import build_nav, part_pages
+from textbook.page_toc import toc_tokens
+from textbook.render import LessonPage, finish_lesson_html, images_without_description
 from textbook.workspace import WorkspaceBuildError, ensure_built
 
 log = logging.getLogger("mkdocs.hooks.textbook")
+GLOSSARY_PAGE = "glossary.md"
 _lessons: list[Lesson] = []
+_glossary: list[glossary.Entry] = []
 
 
 def on_config(config):
-    global _lessons
+    global _lessons, _glossary
     try:
         _lessons = load_all()
+        _glossary = glossary.load()
     except ValueError as error:
         raise PluginError(f"lesson check failed:\n{error}") from None
-    config["nav"] = build_nav(_lessons)
+    config["nav"] = build_nav(_lessons, glossary=GLOSSARY_PAGE)
     return config
 
 
@@ -51,10 +64,47 @@ def on_files(files: Files, config) -> Files:
         files.append(File(lesson.site_path, src_dir=str(paths.NOTEBOOKS),
                           dest_dir=config["site_dir"],
                           use_directory_urls=config["use_directory_urls"]))
+    for site_path, markdown in part_pages(_lessons).items():
+        files.append(File.generated(config, site_path, content=markdown))
     return files
 
 
+def _lesson_of(page) -> Lesson | None:
+    return next((lesson for lesson in _lessons if lesson.site_path == page.file.src_uri), None)
+
+
+def _url_from(page, files: Files, src_uri: str) -> str:
+    return get_relative_url(files.get_file_from_path(src_uri).url, page.url)
+
+
 def on_page_content(html: str, page, config, files) -> str:
-    if page.file.src_uri.endswith(".ipynb"):
-        return finish_lesson_html(html)
-    return html
+    lesson = _lesson_of(page)
+    if lesson is None:
+        return html
+    by_id = {other.id: other for other in _lessons}
+    prerequisites = [(by_id[prereq].title, _url_from(page, files, by_id[prereq].site_path))
+                     for prereq in lesson.meta["prerequisites"]]
+    finished = finish_lesson_html(html, LessonPage(
+        header=header_html(lesson.meta, prerequisites), glossary=_glossary,
+        glossary_url=_url_from(page, files, GLOSSARY_PAGE)))
+    soup = BeautifulSoup(finished, "html.parser")
+    missing = images_without_description(soup)
+    if missing:
+        raise PluginError(f"{lesson.source}: {len(missing)} picture(s) without a description "
+                          f"(alt text); draw graphs with labkit.draw_graph, which adds one")
+    page.toc = get_toc(toc_tokens(soup))
+    return finished
+
+
+def on_page_context(context, page, config, nav):
+    lesson = _lesson_of(page)
+    if lesson is not None and config.get("repo_url") and config.get("edit_uri"):
+        page.edit_url = source_edit_url(config["repo_url"], config["edit_uri"], lesson.source)
+    return context
+
+
+def source_edit_url(repo_url: str, edit_uri: str, source: str) -> str:
+    """The edit link of a repository file: ``edit_uri`` names docs/, so the
+    repository root is one folder up (``edit/main/docs/`` -> ``edit/main/``)."""
+    root = edit_uri.strip("/").rsplit("/", 1)[0]
+    return f"{repo_url.rstrip('/')}/{root}/{source}"

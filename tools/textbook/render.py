@@ -3,13 +3,20 @@
 - snippet includes get mkdocs-material's code-block title bar: the title
   line that includes.render() writes is moved into the code block;
 - cells tagged ``solution`` (or ``hint``) are folded into a collapsed
-  ``<details>`` block, so readers try first and look second.
+  ``<details>`` block, so readers try first and look second;
+- the lesson's header box goes under its title, its final Key points
+  section becomes a box, and the first prose use of each glossary term
+  links to the glossary (:class:`LessonPage` says what to add).
 """
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass, field
 
 from bs4 import BeautifulSoup
+
+from .glossary import Entry, link_first_uses
+from .keypoints import HEADING as KEY_POINTS
 
 _TITLE = re.compile(
     r'<div class="snippet-title">(?P<title>[^<]*)</div>\s*<div class="highlight">')
@@ -62,5 +69,69 @@ def fold_tagged_cells(html: str) -> str:
     return str(soup)
 
 
-def finish_lesson_html(html: str) -> str:
-    return fold_tagged_cells(title_snippets(html))
+@dataclass
+class LessonPage:
+    """What the build adds to one lesson page."""
+
+    header: str = ""
+    glossary: list[Entry] = field(default_factory=list)
+    glossary_url: str = ""
+
+
+def _top_cell(element):
+    """The notebook cell (outermost ``div.jp-Cell``) holding ``element``."""
+    cells = [parent for parent in element.parents
+             if parent.name == "div" and "jp-Cell" in (parent.get("class") or [])]
+    return cells[-1] if cells else None
+
+
+def add_header(soup: BeautifulSoup, header: str) -> None:
+    """Put the header box right under the page title (the first h1)."""
+    title = soup.find("h1")
+    if title is not None and header:
+        title.insert_after(BeautifulSoup(header, "html.parser"))
+
+
+def _heading_text(heading) -> str:
+    return heading.get_text().replace("\u00b6", "").strip()
+
+
+def box_key_points(soup: BeautifulSoup) -> bool:
+    """Wrap the last Key points section (its cell and every cell after it) in a box."""
+    headings = [h for h in soup.find_all("h2") if _heading_text(h) == KEY_POINTS]
+    if not headings:
+        return False
+    first = _top_cell(headings[-1])
+    if first is None:
+        return False
+    box = soup.new_tag("div", attrs={"class": "admonition abstract textbook-key-points"})
+    first.insert_before(box)
+    cell = first
+    while cell is not None:
+        following = cell.find_next_sibling()
+        box.append(cell.extract())
+        cell = following
+    return True
+
+
+def finish_lesson_html(html: str, page: LessonPage | None = None) -> str:
+    """The lesson HTML with title bars, folds and, given ``page``, header, Key
+    points box and glossary links."""
+    html = fold_tagged_cells(title_snippets(html))
+    if page is None:
+        return html
+    soup = BeautifulSoup(html, "html.parser")
+    link_first_uses(soup, page.glossary, page.glossary_url)  # prose only, not the header
+    add_header(soup, page.header)
+    box_key_points(soup)
+    return str(soup)
+
+
+#: What nbconvert writes when an image output has no ``alt`` metadata.
+NO_DESCRIPTION = "No description has been provided for this image"
+
+
+def images_without_description(soup: BeautifulSoup) -> list:
+    """Images a screen reader could say nothing about."""
+    return [image for image in soup.find_all("img")
+            if not (image.get("alt") or "").strip() or image.get("alt") == NO_DESCRIPTION]
