@@ -37,6 +37,7 @@ setup(
             'sensor_publisher = my_robot_pkg.sensor_publisher:main',
             'data_processor = my_robot_pkg.data_processor:main',
             'robot_controller = my_robot_pkg.robot_controller:main',
+            'print_counter = my_robot_pkg.print_counter:main',
         ],
     },
     # [END entry_points]

@@ -61,6 +61,9 @@ RUNNING = [
     Case("my_robot_pkg", "robot_system.launch.py",
          nodes={"/sensor_publisher": {"publish_rate": 2.0},
                 "/data_processor": {"window_size": 3}}),
+    Case("my_robot_pkg", "print_buffered.launch.py", nodes={"/print_counter": {}}),
+    Case("my_robot_pkg", "print_unbuffered.launch.py",
+         nodes={"/tty_counter": {}, "/unbuffered_counter": {}}),
     # lesson 6.2
     Case("my_robot_pkg", "controller_params.launch.py",
          nodes={"/sensor_publisher": {"publish_rate": 4.0},

@@ -17,11 +17,13 @@ def generate_launch_description():
                               description='Name the controller reports'),
         # [END arguments]
         LogInfo(msg=['Starting controller of ', robot_name, ' in namespace /', robot_ns]),
+        # [START node]
         Node(
             package='my_robot_pkg',
             executable='robot_controller',
-            namespace=robot_ns,
+            namespace=robot_ns,  # robot1 -> the node is /robot1/robot_controller
             parameters=[{'robot_name': robot_name}],
             output='screen',
         ),
+        # [END node]
     ])

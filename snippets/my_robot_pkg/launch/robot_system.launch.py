@@ -17,10 +17,10 @@ def generate_launch_description():
     return LaunchDescription([
         # [START sensor_node]
         Node(
-            package='my_robot_pkg',         # the package that holds the program
-            executable='sensor_publisher',  # the program: an entry point of setup.py
+            package='my_robot_pkg',         # the package that holds it
+            executable='sensor_publisher',  # an entry point of setup.py
             name='sensor_publisher',        # the node's name in the ROS graph
-            output='screen',                # show everything it prints in this terminal
+            output='screen',                # its output is shown in this terminal
         ),
         # [END sensor_node]
         Node(
