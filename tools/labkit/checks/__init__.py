@@ -1,14 +1,26 @@
-"""Every exercise of the book, by id; each chapter's checks live in a module
-of this package (`ch06_01.py` for lesson 6.1) that lists its EXERCISES."""
+"""Every exercise of the book, by id.
+
+Each lesson's checks live in a module of this package named after it
+(`ch06_01.py` for lesson 6.1) that lists its `EXERCISES`; every such module
+is picked up here, so adding a lesson's checks touches no other file.
+"""
 from __future__ import annotations
 
-from labkit.checks import ch06_01
+import importlib
+import pkgutil
+
 from labkit.errors import LabkitError
 from labkit.grading.exercise import Exercise
 
-EXERCISES: dict[str, Exercise] = {exercise.id: exercise for exercise in (
-    *ch06_01.EXERCISES,
-)}
+
+def _lesson_modules() -> list:
+    names = sorted(info.name for info in pkgutil.iter_modules(__path__)
+                   if info.name.startswith('ch'))
+    return [importlib.import_module(f'{__name__}.{name}') for name in names]
+
+
+EXERCISES: dict[str, Exercise] = {exercise.id: exercise for module in _lesson_modules()
+                                  for exercise in module.EXERCISES}
 
 
 def find(exercise_id: str) -> Exercise:
