@@ -88,7 +88,7 @@ def case_workspace(tmp_path_factory, lesson_environment) -> Path:
             answer = checks.find(case.exercise).wrong_answers()[case.name]
             for relative, source in answer.items():
                 (workspace / 'src' / case.package / relative).write_bytes(source.read_bytes())
-    result = subprocess.run([str(paths.VENV_BIN / 'colcon'), 'build'], cwd=workspace,
+    result = subprocess.run([paths.executable('colcon'), 'build'], cwd=workspace,
                             capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr
     return workspace

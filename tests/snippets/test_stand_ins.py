@@ -48,8 +48,8 @@ def test_a_plain_colcon_build_installs_nothing_over_a_real_turtlesim(tmp_path):
     (tmp_path / "ws/src").mkdir(parents=True)
     (tmp_path / "ws/src/turtlesim").symlink_to(paths.SNIPPETS / "turtlesim")
     env = dict(os.environ, AMENT_PREFIX_PATH=str(real),
-               PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
-    result = subprocess.run([str(paths.VENV_BIN / "colcon"), "build"], cwd=tmp_path / "ws",
+               PATH=paths.tool_path())
+    result = subprocess.run([paths.executable("colcon"), "build"], cwd=tmp_path / "ws",
                             env=env, capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr
     install = tmp_path / "ws/install/turtlesim"

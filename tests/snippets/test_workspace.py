@@ -24,8 +24,8 @@ def test_workspace_builds_from_scratch_like_a_student(tmp_path):
     where the project environment is active (its bin/ first on PATH, as
     `source /opt/ros/jazzy/setup.bash` would put ROS 2's)."""
     (tmp_path / "src").symlink_to(paths.SNIPPETS)
-    env = dict(os.environ, PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
-    result = subprocess.run([str(paths.VENV_BIN / "colcon"), "build"], cwd=tmp_path, env=env,
+    env = dict(os.environ, PATH=paths.tool_path())
+    result = subprocess.run([paths.executable("colcon"), "build"], cwd=tmp_path, env=env,
                             capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr
     assert f"Summary: {len(PACKAGES)} package" in result.stdout

@@ -1,6 +1,8 @@
 """Where things live in the repository, computed once so no module guesses."""
 from __future__ import annotations
 
+import os
+import shutil
 import sys
 from pathlib import Path
 
@@ -19,6 +21,22 @@ MKDOCS_YML = ROOT / "mkdocs.yml"
 # The interpreter of the project environment; its bin/ holds colcon, ros2,
 # mkdocs and pytest, so it goes first on PATH for everything we start.
 VENV_BIN = Path(sys.executable).parent
+
+
+def tool_path(path: str | None = None) -> str:
+    """``PATH`` with the project environment's bin/ first (``path``: the PATH to extend)."""
+    rest = os.environ.get("PATH", "") if path is None else path
+    return f"{VENV_BIN}{os.pathsep}{rest}"
+
+
+def executable(name: str) -> str:
+    """The command ``name`` as the project environment finds it: .venv/bin, then
+    PATH (with ROS 2 sourced, ``colcon`` or ``ros2`` may come from there only)."""
+    found = shutil.which(name, path=tool_path())
+    if found is None:
+        raise FileNotFoundError(f"{name}: not found in {VENV_BIN} or on PATH; "
+                                f"run `make setup` (or source your ROS 2 installation)")
+    return found
 
 
 def rel(path: Path) -> str:

@@ -70,7 +70,7 @@ def colcon_command(snippets: Path = paths.SNIPPETS,
                    workspace: Path = paths.WORKSPACE) -> list[str]:
     """The colcon call: the student's ``colcon build``, pointed at our folders."""
     skip = skipped_packages()
-    return [str(paths.VENV_BIN / "colcon"), "--log-base", str(workspace / "log"), "build",
+    return [paths.executable("colcon"), "--log-base", str(workspace / "log"), "build",
             "--base-paths", str(snippets), "--build-base", str(workspace / "build"),
             "--install-base", str(workspace / "install"),
             *(["--packages-skip", *skip] if skip else [])]
@@ -93,7 +93,7 @@ def ensure_built(snippets: Path = paths.SNIPPETS, workspace: Path = paths.WORKSP
         previous = install.resolve().parent if install.is_symlink() else None
         shutil.rmtree(generation, ignore_errors=True)
         generation.mkdir(parents=True)
-        env = dict(os.environ, PATH=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
+        env = dict(os.environ, PATH=paths.tool_path())
         result = subprocess.run(colcon_command(snippets, generation), cwd=generation, env=env,
                                 capture_output=True, text=True, timeout=600)
         if result.returncode != 0:
