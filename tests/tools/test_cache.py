@@ -59,6 +59,23 @@ def test_key_changes_with_the_tools(tmp_path, snippets, monkeypatch):
     assert key_of(path, snippets) != before
 
 
+def test_key_changes_with_the_ros_stack(tmp_path, snippets, monkeypatch):
+    """A sourced ROS 2 (its ros2, colcon, launch on PATH/PYTHONPATH) is another stack."""
+    path = write_lesson(tmp_path, code_cells("print(1)"))
+    before = key_of(path, snippets)
+    ros = tmp_path / "opt_ros" / "bin"
+    ros.mkdir(parents=True)
+    for name in ("ros2", "colcon"):
+        (ros / name).write_text("#!/bin/sh\n")
+        (ros / name).chmod(0o755)
+    monkeypatch.setattr(paths, "VENV_BIN", tmp_path / "no_venv")  # as with no clean room
+    monkeypatch.setenv("PATH", str(ros))
+    other_stack = key_of(path, snippets)
+    assert other_stack != before
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(ros.parent))
+    assert key_of(path, snippets) != other_stack
+
+
 def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
     monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
     monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")

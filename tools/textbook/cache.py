@@ -8,6 +8,7 @@ launch, the pinned packages).
 from __future__ import annotations
 
 import fcntl
+import importlib.util
 import os
 import re
 import shutil
@@ -34,8 +35,19 @@ def tools_fingerprint() -> str:
     sources = [here / name for name in _EXECUTION_MODULES]
     sources += [paths.TOOLS / "labkit", paths.TOOLS / "cleanroom" / "src",
                 paths.ROOT / "requirements" / "lock.txt"]
-    ros2 = shutil.which("ros2", path=f"{paths.VENV_BIN}{os.pathsep}{os.environ.get('PATH', '')}")
-    return hash_text(__version__, hash_paths(sources, base=paths.ROOT), str(ros2))
+    return hash_text(__version__, hash_paths(sources, base=paths.ROOT), ros_stack())
+
+
+def ros_stack() -> str:
+    """Which ROS 2 stack executes lessons: where ``ros2``, ``colcon`` and the
+    launch and rclpy packages come from (the clean room in .venv, or a sourced
+    ROS 2 installation), so switching stacks in one checkout re-executes."""
+    commands = [str(shutil.which(name, path=paths.tool_path())) for name in ("ros2", "colcon")]
+    modules = []
+    for name in ("launch", "launch_ros", "rclpy"):
+        spec = importlib.util.find_spec(name)
+        modules.append(str(spec.origin if spec else None))
+    return "\n".join([*commands, *modules, os.environ.get("AMENT_PREFIX_PATH", "")])
 
 
 def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]:
