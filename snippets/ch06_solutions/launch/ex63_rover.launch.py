@@ -1,6 +1,6 @@
 """Exercise 6.3.1: a rover whose name, speed limit and sensor are launch arguments.
 
-    ros2 launch ch06_solutions ex63_rover.launch.py \
+    ros2 launch my_ws_exercises ex63_rover.launch.py \
         robot_name:=explorer max_speed:=1.5 use_sensor:=false
 """
 from launch import LaunchDescription

@@ -1,0 +1,36 @@
+# Mistake: the controller's robot_name is written into the file ('rover') instead of
+#   taken from the argument, so robot_name:=explorer changes nothing.
+# Verdict names: /robot_controller got robot_name 'rover', expected 'explorer' from the command line
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, LogInfo
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration, PythonExpression
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    max_speed = LaunchConfiguration('max_speed')
+    use_sensor = LaunchConfiguration('use_sensor')
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_name', default_value='rover',
+                              description='Name of the robot'),
+        DeclareLaunchArgument('max_speed', default_value='0.3',
+                              description='Top linear speed in m/s (a decimal number)'),
+        DeclareLaunchArgument('use_sensor', default_value='true', choices=['true', 'false']),
+        Node(
+            package='my_robot_pkg',
+            executable='robot_controller',
+            parameters=[{'robot_name': 'rover', 'max_linear_speed': max_speed}],
+            output='screen',
+        ),
+        Node(
+            package='my_robot_pkg',
+            executable='sensor_publisher',
+            output='screen',
+            condition=IfCondition(use_sensor),
+        ),
+        LogInfo(
+            msg=['Fast robot: max_speed ', max_speed, ' m/s is above 1.0 m/s'],
+            condition=IfCondition(PythonExpression([max_speed, ' > 1.0'])),
+        ),
+    ])
