@@ -24,15 +24,13 @@ from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
 from traitlets import default
 
-from . import cache, paths, reaper
+from . import cache, paths, reaper, settings
 from .environment import ros_env
 from .isolation import acquire_domain
 from .lessons import Lesson, load
 
 #: labkit.exercises reads it (kept in step with labkit.exercises.APPLY_SOLUTIONS).
 APPLY_SOLUTIONS = "TEXTBOOK_APPLY_SOLUTIONS"
-CELL_TIMEOUT = 180  # seconds; a cell that runs longer is reported as hung
-JOBS = 2
 
 
 class NativeKernelManager(AsyncKernelManager):
@@ -104,8 +102,12 @@ def _workdir(lesson: Lesson, token: str) -> Path:
     return folder
 
 
-def execute(lesson: Lesson, timeout: int = CELL_TIMEOUT) -> nbformat.NotebookNode:
-    """Run every cell of ``lesson`` in a new kernel; returns the executed notebook."""
+def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode:
+    """Run every cell of ``lesson`` in a new kernel; returns the executed notebook.
+
+    ``timeout``: seconds a cell may run (default: the ``cell_timeout`` setting).
+    """
+    timeout = settings.load().cell_timeout if timeout is None else timeout
     notebook = copy.deepcopy(lesson.notebook)
     with acquire_domain() as lease:
         env = ros_env(lease)
@@ -154,7 +156,7 @@ def executed(lesson: Lesson) -> nbformat.NotebookNode:
 
 
 def refresh(lesson: Lesson) -> nbformat.NotebookNode:
-    """Execute ``lesson`` even if cached, and store the result (what tests want)."""
+    """Execute ``lesson`` even if cached, and store the result."""
     key = cache.lesson_key(lesson)
     with cache.exclusive(key):
         notebook = execute(lesson)
@@ -171,8 +173,10 @@ def _publish_path(path: str) -> str:
     return str(publish(load(Path(path))))
 
 
-def publish_all(lessons: list[Lesson], jobs: int = JOBS) -> dict[str, Path]:
-    """Publish every lesson, ``jobs`` at a time; raises one error listing all failures."""
+def publish_all(lessons: list[Lesson], jobs: int | None = None) -> dict[str, Path]:
+    """Publish every lesson, ``jobs`` at a time (default: the ``jobs`` setting);
+    raises one error listing all failures."""
+    jobs = settings.load().jobs if jobs is None else jobs
     results: dict[str, Path] = {}
     failures: list[str] = []
     stale = [lesson for lesson in lessons if cache.cached(cache.lesson_key(lesson)) is None]
