@@ -1,214 +1,34 @@
-"""Draw a :class:`GraphSnapshot` the way rqt_graph does: nodes as ellipses,
-topics as boxes, arrows from publisher to topic to subscriber.
+"""Draw the ROS graph the way rqt_graph does (:func:`draw_graph`).
 
-Every label is measured with the figure's own renderer first, and the
-layout (:mod:`labkit.graph_layout`) sizes its columns from those
-measurements, so shapes never overlap and arrows never cross a label.  The
-figure stays within notebook width (:data:`MAX_WIDTH`): a wide graph first
-gets a smaller font, then wraps into bands and grows downwards.  The layout
-is deterministic, so an executed lesson shows the same picture on every
-build.
-
-In a notebook the figure shows itself as a captioned picture
-(:class:`GraphFigure`): an HTML ``<figure>`` whose ``<img>`` has an alt text
-listing every node and connection and is displayed at one scale for every
-graph (:data:`DISPLAY_PX_PER_INCH`), so two graphs on a page compare at a
-glance and labels stay readable at the column width.
+The picture is made by :mod:`labkit.graph_drawing` from a snapshot;
+this module adds taking the snapshot when none is given, which needs
+:mod:`labkit.graph` (that in turn draws through :mod:`labkit.graph_drawing`,
+so neither imports the other in a cycle).
 """
 from __future__ import annotations
 
-import base64
-import html
-import io
 from typing import Any
 
-import matplotlib.pyplot as plt
-import networkx as nx
-from matplotlib.figure import Figure
-from matplotlib.patches import BoxStyle
-from matplotlib.path import Path
-from matplotlib.text import Text
-from matplotlib.transforms import Affine2D
+from labkit.graph import graph as take_snapshot
+from labkit.graph_drawing import (
+    DISPLAY_PX_PER_INCH,
+    FONT_SIZES,
+    MAX_WIDTH,
+    PNG_DPI,
+    GraphFigure,
+    default_caption,
+    describe,
+    layers,
+    layout,
+    layout_plan,
+    render,
+    to_networkx,
+    without_cycles,
+)
 
-from labkit.graph_layout import Placement, Spacing, place, without_cycles
-from labkit.graph_paths import FollowPath
-
-__all__ = ['DISPLAY_PX_PER_INCH', 'MAX_WIDTH', 'GraphFigure', 'describe', 'draw_graph', 'layers',
-           'layout', 'to_networkx', 'without_cycles']
-
-#: Widest figure, in inches: what a notebook shows without scaling it down.
-MAX_WIDTH = 9.5
-#: Label sizes in points, tried in turn before wrapping into bands (at the first).
-FONT_SIZES = (9.0, 8.0)
-TITLE_SIZE = 11.0
-TITLE_SPACE = 0.4  # inches above the graph for the title
-#: Screen pixels per figure inch for every graph on a page: MAX_WIDTH fits the
-#: book's content column (874 px), where a 9 pt label is 11.5 px high.
-DISPLAY_PX_PER_INCH = 92
-PNG_DPI = 2 * DISPLAY_PX_PER_INCH  # sharp on high-density screens too
-
-
-class GraphFigure(Figure):
-    """A graph picture that carries its caption and description to the page.
-
-    Jupyter renders the ``text/html`` part of :meth:`_repr_mimebundle_`: a
-    ``<figure>`` with the alt text and a ``<figcaption>``, the width fixed at
-    the book's scale.  ``image/png`` (with ``alt`` metadata) is there for
-    front ends that show no HTML.
-    """
-
-    caption: str = ''
-    description: str = ''
-
-    def png(self) -> bytes:
-        """The picture at exactly the figure's size (no tight bounding box, so
-        every graph keeps the same scale)."""
-        buffer = io.BytesIO()
-        self.savefig(buffer, format='png', dpi=PNG_DPI, facecolor='white')
-        return buffer.getvalue()
-
-    def display_width(self) -> int:
-        """Width in screen pixels at the book's scale."""
-        return round(self.get_figwidth() * DISPLAY_PX_PER_INCH)
-
-    def to_html(self, encoded: str | None = None) -> str:
-        """The captioned ``<figure>``; `encoded` is the base64 PNG if already made."""
-        encoded = encoded or base64.b64encode(self.png()).decode('ascii')
-        return (f'<figure class="ros-graph">'
-                f'<img src="data:image/png;base64,{encoded}" width="{self.display_width()}" '
-                f'alt="{html.escape(self.description)}">'
-                f'<figcaption>{html.escape(self.caption)}</figcaption></figure>')
-
-    def _repr_mimebundle_(self, include: Any = None, exclude: Any = None,
-                          ) -> tuple[dict[str, str], dict[str, Any]]:
-        encoded = base64.b64encode(self.png()).decode('ascii')
-        data = {'text/html': self.to_html(encoded), 'image/png': encoded,
-                'text/plain': f'<ROS graph: {self.caption}>'}
-        metadata = {'image/png': {'alt': self.description, 'width': self.display_width()}}
-        return data, metadata
-
-
-class Ellipse(BoxStyle.Ellipse):
-    """An ellipse around a label that is taller and so narrower than matplotlib's.
-
-    matplotlib's ellipse circumscribes the padded label with both axes
-    stretched by √2, which makes long node names very wide.  Stretching the
-    height by 2 instead needs only 2/√3 ≈ 1.15 of the width, still with the
-    whole label inside.
-    """
-
-    HEIGHT_STRETCH = 2.0
-
-    def __call__(self, x0: float, y0: float, width: float, height: float,
-                 mutation_size: float) -> Path:
-        pad = mutation_size * self.pad
-        width, height = width + 2 * pad, height + 2 * pad
-        b = height / 2 * self.HEIGHT_STRETCH
-        a = width / 2 / (1 - 1 / self.HEIGHT_STRETCH ** 2) ** 0.5
-        centre_x, centre_y = x0 + width / 2 - pad, y0 + height / 2 - pad
-        return Path.unit_circle().transformed(
-            Affine2D().scale(a, b).translate(centre_x, centre_y))
-
-
-NODE_STYLE = dict(boxstyle=Ellipse(pad=0.3), facecolor='#dbe9f6', edgecolor='#2b6cb0',
-                  linewidth=1.2)
-TOPIC_STYLE = dict(boxstyle='square,pad=0.5', facecolor='#fdf1dc', edgecolor='#b7791f',
-                   linewidth=1.2)
-ARROW_COLOR = '#4a5568'
-ARROW_SCALE = 11.0  # points; the head of '-|>' is 0.4 of it long and 0.2 of it wide
-HEAD_HALF_WIDTH = 0.2 * ARROW_SCALE / 72 + 0.01  # inches, with a little air
-TEXT_COLOR = '#1a202c'
-
-
-def to_networkx(snapshot: Any) -> nx.DiGraph:
-    """The snapshot as a directed graph; each vertex has `kind` 'node' or 'topic'."""
-    graph = nx.DiGraph()
-    for name in snapshot.nodes:
-        graph.add_node(name, kind='node')
-    for topic in snapshot.topics.values():
-        graph.add_node(topic.name, kind='topic', type=topic.type)
-    graph.add_edges_from(snapshot.edges())
-    return graph
-
-
-def layers(graph: nx.DiGraph) -> list[list[str]]:
-    """Vertices in columns, each right of everything that feeds it, top to bottom.
-
-    A feedback loop is laid out along the data flow and only its way back
-    points left.  Within a column the order keeps arrows from crossing.
-    """
-    return layout_plan(graph).columns
-
-
-def layout(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
-           ) -> dict[str, tuple[float, float]]:
-    """x, y centre (inches, y up) of every vertex for shapes of the given sizes
-    (default: 1.2 x 0.35 inches each)."""
-    return layout_plan(graph, sizes).centres
-
-
-def layout_plan(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
-                max_width: float | None = None) -> Placement:
-    """The full :class:`~labkit.graph_layout.Placement` (centres and arrow paths)."""
-    if sizes is None:
-        sizes = {vertex: (1.2, 0.35) for vertex in graph}
-    # arrows meet a topic's box on its sides, clear of the corners, where an
-    # arrowhead arriving at a slant would cut into the box
-    reach = {vertex: sizes[vertex][1] / 2 - HEAD_HALF_WIDTH for vertex in graph
-             if graph.nodes[vertex].get('kind') == 'topic'}
-    return place(graph, sizes, Spacing(), max_width, reach)
-
-
-def _label(vertex: str, graph: nx.DiGraph, show_types: bool) -> str:
-    if graph.nodes[vertex]['kind'] == 'topic' and show_types:
-        return f"{vertex}\n[{graph.nodes[vertex]['type']}]"
-    return vertex
-
-
-def _measure(labels: dict[str, Text], figure: Figure, fontsize: float,
-             ) -> dict[str, tuple[float, float]]:
-    """Width and height, in inches, of each label's shape at `fontsize`."""
-    renderer = figure.canvas.get_renderer()
-    sizes = {}
-    for vertex, label in labels.items():
-        label.set_fontsize(fontsize)
-        label.update_bbox_position_size(renderer)
-        extent = label.get_bbox_patch().get_window_extent(renderer)
-        sizes[vertex] = (extent.width / figure.dpi, extent.height / figure.dpi)
-    return sizes
-
-
-def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure) -> Placement:
-    """The layout at the font size that needs the fewest bands (the larger on a
-    tie); leaves the labels at that size."""
-    plans = [(layout_plan(graph, _measure(labels, figure, size), MAX_WIDTH), size)
-             for size in FONT_SIZES]
-    plan, fontsize = min(plans, key=lambda entry: (entry[0].bands, -entry[1]))
-    _measure(labels, figure, fontsize)
-    return plan
-
-
-def describe(graph: nx.DiGraph) -> str:
-    """What the picture shows, in words: the alt text a screen reader reads."""
-    nodes = sorted(v for v in graph if graph.nodes[v]['kind'] == 'node')
-    if not nodes:
-        return 'ROS graph with no nodes.'
-    parts = [f"ROS graph of {len(nodes)} node{'s' * (len(nodes) != 1)}: {', '.join(nodes)}."]
-    for topic in sorted(v for v in graph if graph.nodes[v]['kind'] == 'topic'):
-        publishers = ', '.join(sorted(graph.predecessors(topic))) or 'nobody'
-        subscribers = ', '.join(sorted(graph.successors(topic))) or 'nobody'
-        parts.append(f'Topic {topic} is published by {publishers} and read by {subscribers}.')
-    return ' '.join(parts)
-
-
-def default_caption(graph: nx.DiGraph, title: str | None) -> str:
-    """A caption that says what the picture shows and how to read it."""
-    kinds = [graph.nodes[v]['kind'] for v in graph]
-    nodes, topics = kinds.count('node'), kinds.count('topic')
-    shown = (f"{nodes} node{'s' * (nodes != 1)} (ellipses) and "
-             f"{topics} topic{'s' * (topics != 1)} (boxes); each arrow runs from a "
-             f"publisher to its topic or from a topic to a subscriber")
-    return f'The ROS graph, {title}: {shown}.' if title else f'The ROS graph: {shown}.'
+__all__ = ['DISPLAY_PX_PER_INCH', 'FONT_SIZES', 'MAX_WIDTH', 'PNG_DPI', 'GraphFigure',
+           'default_caption', 'describe', 'draw_graph', 'layers', 'layout', 'layout_plan',
+           'to_networkx', 'without_cycles']
 
 
 def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | None = None,
@@ -221,64 +41,5 @@ def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | N
     read it); the alt text lists every node and connection.
     """
     if snapshot is None:
-        from labkit.graph import graph as take_snapshot
         snapshot = take_snapshot()
-    graph = to_networkx(snapshot)
-    figure = plt.figure(figsize=(4.0, 1.0), FigureClass=GraphFigure)
-    figure.caption = caption or default_caption(graph, title)
-    figure.description = describe(graph)
-    try:  # measuring needs the open figure's canvas
-        _draw(figure, graph, show_types, title)
-    finally:
-        plt.close(figure)  # returned, not also auto-shown: Jupyter displays it once
-    return figure
-
-
-def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None) -> None:
-    axes = figure.add_axes((0.0, 0.0, 1.0, 1.0))
-    axes.set_axis_off()
-    if title:
-        axes.set_title(title, fontsize=TITLE_SIZE, color=TEXT_COLOR, pad=8)
-    if not graph:
-        axes.text(0.5, 0.5, 'no nodes in the graph', ha='center', va='center',
-                  fontsize=FONT_SIZES[0] + 1, color='#718096', transform=axes.transAxes)
-        _reserve_title_space(figure, axes, 4.0, 1.0, bool(title))
-        return
-    labels = {
-        vertex: axes.text(0, 0, _label(vertex, graph, show_types), ha='center', va='center',
-                          color=TEXT_COLOR, zorder=3, multialignment='center',
-                          bbox=NODE_STYLE if graph.nodes[vertex]['kind'] == 'node'
-                          else TOPIC_STYLE)
-        for vertex in sorted(graph)}
-    plan = _fit(graph, labels, figure)
-    width, height = plan.width, plan.height
-    if title:  # never cut the title off
-        extent = axes.title.get_window_extent(figure.canvas.get_renderer())
-        width = max(width, extent.width / figure.dpi + 0.4)
-    _reserve_title_space(figure, axes, width, height, bool(title))
-    spare = (width - plan.width) / 2  # under a wide title, the graph sits centred
-    axes.set_xlim(-spare, plan.width + spare)
-    axes.set_ylim(0, height)
-    for vertex, label in labels.items():
-        label.set_position(plan.centres[vertex])
-    for source, target in sorted(graph.edges):
-        if (source, target) not in plan.routes:
-            continue  # a self-loop: a node and a topic with the same name
-        # Arrows are drawn after the labels (higher zorder): each label has
-        # placed its shape by then, and the arrow is cut at that shape.
-        axes.annotate('', xy=plan.centres[target], xytext=plan.centres[source], zorder=4,
-                      arrowprops=dict(
-                          arrowstyle='-|>', color=ARROW_COLOR, linewidth=1.1,
-                          mutation_scale=ARROW_SCALE, shrinkA=1.0, shrinkB=0.5,
-                          connectionstyle=FollowPath(plan.routes[(source, target)],
-                                                     axes.transData),
-                          patchA=labels[source].get_bbox_patch(),
-                          patchB=labels[target].get_bbox_patch()))
-
-
-def _reserve_title_space(figure: Figure, axes: Any, width: float, height: float,
-                         titled: bool) -> None:
-    """Size the figure to `width` x `height` inches of axes, plus room for a title."""
-    total = height + (TITLE_SPACE if titled else 0.0)
-    figure.set_size_inches(width, total)
-    axes.set_position((0.0, 0.0, 1.0, height / total))
+    return render(snapshot, show_types=show_types, title=title, caption=caption)

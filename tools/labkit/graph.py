@@ -15,6 +15,7 @@ from rcl_interfaces.srv import GetParameters, ListParameters
 
 from labkit import observer
 from labkit.errors import LabkitError
+from labkit.graph_drawing import render
 
 #: Topics every node publishes or subscribes to; noise in a picture of a system.
 DEFAULT_TOPICS = ('/rosout', '/parameter_events')
@@ -71,8 +72,7 @@ class GraphSnapshot:
 
     def draw(self, **options: Any) -> Any:
         """The graph as a matplotlib Figure (see :func:`labkit.draw_graph`)."""
-        from labkit.drawing import draw_graph
-        return draw_graph(self, **options)
+        return render(self, **options)
 
     def __str__(self) -> str:
         lines = [f'{len(self.nodes)} nodes: {", ".join(self.nodes) or "none"}']

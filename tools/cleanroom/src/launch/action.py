@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List, Optional
 
 from .condition import Condition
+from .events import ExecutionComplete
 from .launch_description_entity import LaunchDescriptionEntity
 
 if TYPE_CHECKING:
@@ -40,8 +41,6 @@ class Action(LaunchDescriptionEntity):
             self.__announce_completion(context)
 
     def __announce_completion(self, context: LaunchContext) -> None:
-        from .events import ExecutionComplete  # late: events import actions' base
-
         event = ExecutionComplete(action=self)
         if not context.would_handle_event(event):
             return

@@ -75,6 +75,7 @@ class LaunchDescription(LaunchDescriptionEntity):
             self, conditional_inclusion: bool = False
     ) -> List[Tuple[DeclareLaunchArgument, List[IncludeLaunchDescription]]]:
         """Like get_launch_arguments(), with the includes each argument was found through."""
+        # late: actions build on LaunchDescription, so it cannot import them at module level
         from .actions.declare_launch_argument import DeclareLaunchArgument
         from .actions.include_launch_description import IncludeLaunchDescription
 

@@ -3,10 +3,11 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Optional
 
+from .launch_context import LaunchContext
 from .launch_description import LaunchDescription
+from .utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
-    from .launch_context import LaunchContext
     from .some_substitutions_type import SomeSubstitutionsType
 
 
@@ -20,8 +21,6 @@ class LaunchDescriptionSource:
     def __init__(self, launch_description: Optional[LaunchDescription] = None,
                  location: SomeSubstitutionsType = '<string>',
                  method: str = 'interpreted launch file') -> None:
-        from .utilities import normalize_to_list_of_substitutions
-
         self.__launch_description = launch_description
         self.__location = normalize_to_list_of_substitutions(location)
         self.__expanded_location: Optional[str] = None
@@ -43,8 +42,6 @@ class LaunchDescriptionSource:
         """Best-effort load for introspection (--show-args); None when not possible."""
         if self.__launch_description is not None:
             return self.__launch_description
-        from .launch_context import LaunchContext
-        from .utilities import perform_substitutions
 
         try:
             location = perform_substitutions(LaunchContext(), self.__location)
@@ -54,8 +51,6 @@ class LaunchDescriptionSource:
 
     def get_launch_description(self, context: LaunchContext) -> LaunchDescription:
         """Expand the location in `context` and return the (loaded) description."""
-        from .utilities import perform_substitutions
-
         if self.__expanded_location is None:
             self.__expanded_location = perform_substitutions(context, self.__location)
         if self.__launch_description is None:

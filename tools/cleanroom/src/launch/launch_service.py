@@ -8,6 +8,7 @@ import threading
 import traceback
 from typing import Iterable, List, Optional, Set
 
+from . import logging as launch_logging
 from .event import Event
 from .event_handlers.on_include_launch_description import OnIncludeLaunchDescription
 from .events import IncludeLaunchDescription, Shutdown
@@ -33,8 +34,6 @@ class LaunchService:
 
     def __init__(self, *, argv: Optional[Iterable[str]] = None, noninteractive: bool = False,
                  debug: bool = False) -> None:
-        from . import logging as launch_logging
-
         self.__argv = list(argv or [])
         self.__debug = debug
         if debug:

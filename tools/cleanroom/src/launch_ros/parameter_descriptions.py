@@ -13,9 +13,10 @@ from typing import Any, Optional, Union
 from launch import LaunchContext, Substitution
 from launch.utilities import normalize_to_list_of_substitutions
 
-from .utilities.param_files import remove_temporary_file, write_temporary_file
-from .utilities.parameter_values import coerce_value, plain_python_value
-from .utilities.substitution_values import evaluate_value, is_substitution_text, perform_text
+from ._support.file_substitutions import expand_file_substitutions
+from ._support.param_files import remove_temporary_file, write_temporary_file
+from ._support.parameter_values import coerce_value, plain_python_value
+from ._support.substitution_values import evaluate_value, is_substitution_text, perform_text
 
 
 class ParameterValue:
@@ -128,7 +129,6 @@ class ParameterFile:
         if not self._substitutions_allowed(context) or not os.path.isfile(source):
             self.__evaluated = Path(source)
             return self.__evaluated
-        from .utilities.file_substitutions import expand_file_substitutions
         with open(source) as handle:
             text = expand_file_substitutions(context, handle.read(), source)
         self.__created = write_temporary_file(text, owner=id(context))

@@ -15,7 +15,7 @@ from typing import Any, Optional
 
 from launch import LaunchContext
 
-from .utilities.launch_cleanup import add_shutdown_callback
+from ._support.launch_cleanup import add_shutdown_callback
 
 
 class ROSAdapter:
@@ -33,6 +33,7 @@ class ROSAdapter:
             self.start()
 
     def start(self) -> None:
+        # deferred: rclpy (a C extension) loads only when a launch talks to ROS
         import rclpy
         from rclpy.executors import SingleThreadedExecutor
         from rclpy.signals import SignalHandlerOptions

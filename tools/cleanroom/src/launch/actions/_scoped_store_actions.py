@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, List, MutableMapping
 
 from ..action import Action
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -26,8 +27,6 @@ class SetInStore(_StoreAction):
 
     def __init__(self, name: SomeSubstitutionsType, value: SomeSubstitutionsType,
                  **kwargs: object) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__(**kwargs)
         self._name = normalize_to_list_of_substitutions(name)
         self._value = normalize_to_list_of_substitutions(value)
@@ -44,8 +43,6 @@ class SetInStore(_StoreAction):
 
     def execute(self, context: LaunchContext) -> None:
         """Set it."""
-        from ..utilities import perform_substitutions
-
         self._store(context)[perform_substitutions(context, self._name)] = \
             perform_substitutions(context, self._value)
 
@@ -54,8 +51,6 @@ class UnsetInStore(_StoreAction):
     """Remove entry `name` (if set)."""
 
     def __init__(self, name: SomeSubstitutionsType, **kwargs: object) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__(**kwargs)
         self._name = normalize_to_list_of_substitutions(name)
 
@@ -66,6 +61,4 @@ class UnsetInStore(_StoreAction):
 
     def execute(self, context: LaunchContext) -> None:
         """Unset it."""
-        from ..utilities import perform_substitutions
-
         self._store(context).pop(perform_substitutions(context, self._name), None)

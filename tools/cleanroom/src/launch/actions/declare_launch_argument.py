@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, Iterable, List, Optional
 from ..action import Action
 from ..logging import get_logger
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -22,8 +23,6 @@ class DeclareLaunchArgument(Action):
     def __init__(self, name: str, *, default_value: Optional[SomeSubstitutionsType] = None,
                  description: Optional[str] = None,
                  choices: Optional[Iterable[str]] = None, **kwargs: object) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__(**kwargs)
         if not isinstance(name, str):
             raise TypeError(f"DeclareLaunchArgument expected 'name' to be a str, "
@@ -71,8 +70,6 @@ class DeclareLaunchArgument(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Apply the default if unset; check required-ness and choices."""
-        from ..utilities import perform_substitutions
-
         if self.__name not in context.launch_configurations:
             if self.__default_value is None:
                 raise RuntimeError(f'Required launch argument "{self.__name}" '

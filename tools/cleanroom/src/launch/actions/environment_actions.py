@@ -5,7 +5,9 @@ import os
 from typing import TYPE_CHECKING, List, MutableMapping
 
 from ..action import Action
+from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from ._scoped_store_actions import SetInStore, UnsetInStore
 
 if TYPE_CHECKING:
@@ -14,8 +16,6 @@ if TYPE_CHECKING:
 
 
 def _subs(value: object) -> List[Substitution]:
-    from ..utilities import normalize_to_list_of_substitutions
-
     return normalize_to_list_of_substitutions(value)
 
 
@@ -57,9 +57,6 @@ class AppendEnvironmentVariable(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Append or prepend."""
-        from ..conditions.evaluate_condition_expression import evaluate_condition_expression
-        from ..utilities import perform_substitutions
-
         name = perform_substitutions(context, self.__name)
         value = perform_substitutions(context, self.__value)
         separator = perform_substitutions(context, self.__separator)

@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING, List, Sequence, Tuple
 from ..action import Action
 from ..event import Event
 from ..event_handler import BaseEventHandler
+from ..events import Shutdown as ShutdownEvent
 from ..launch_description_entity import LaunchDescriptionEntity
 
 if TYPE_CHECKING:
@@ -86,6 +87,4 @@ class Shutdown(EmitEvent):
     """Shut the launch down, giving `reason`."""
 
     def __init__(self, *, reason: str = 'reason not given', **kwargs: object) -> None:
-        from ..events import Shutdown as ShutdownEvent
-
         super().__init__(event=ShutdownEvent(reason=reason), **kwargs)

@@ -19,8 +19,10 @@ from typing import (
 )
 
 from ..action import Action
+from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..event import Event
-from ..event_handler import BaseEventHandler
+from ..event_handler import BaseEventHandler, normalize_entities
+from ..event_handlers.on_process_exit import OnProcessExit
 from ..events import Shutdown
 from ..events.process import (
     ProcessExited,
@@ -31,8 +33,10 @@ from ..events.process import (
     SignalProcess,
 )
 from ..launch_description_entity import LaunchDescriptionEntity
+from ..logging import get_logger
 from ..substitution import Substitution
 from ..substitutions.launch_configuration import LaunchConfiguration
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from ._process_output import ProcessOutput
 from ._process_runner import RunningProcess
 
@@ -48,20 +52,14 @@ _DEFAULT_SIGKILL_TIMEOUT = LaunchConfiguration('sigkill_timeout', default=5)
 
 
 def _subs(value: object) -> SubstitutionsList:
-    from ..utilities import normalize_to_list_of_substitutions
-
     return normalize_to_list_of_substitutions(value)
 
 
 def _perform(context: LaunchContext, subs: SubstitutionsList) -> str:
-    from ..utilities import perform_substitutions
-
     return perform_substitutions(context, subs)
 
 
 def _flag(context: LaunchContext, value: Union[bool, SubstitutionsList]) -> bool:
-    from ..conditions.evaluate_condition_expression import evaluate_condition_expression
-
     return value if isinstance(value, bool) else evaluate_condition_expression(context, value)
 
 
@@ -252,7 +250,6 @@ class ExecuteProcess(Action):
         """The on_exit entities, if any."""
         if self.__on_exit is None or callable(self.__on_exit):
             return []
-        from ..event_handler import normalize_entities
         return [('on exit', normalize_entities(self.__on_exit))]
 
     def get_asyncio_future(self) -> Optional[asyncio.Future]:
@@ -262,8 +259,6 @@ class ExecuteProcess(Action):
     # --- execution ------------------------------------------------------------
     def execute(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
         """Expand the command and start the process."""
-        from ..logging import get_logger
-
         if context.is_shutdown:
             return None
         self.__expand(context)
@@ -272,8 +267,6 @@ class ExecuteProcess(Action):
         self.__events_handler = _ProcessEvents(self)
         context.register_event_handler(self.__events_handler)
         if self.__on_exit is not None:
-            from ..event_handlers.on_process_exit import OnProcessExit
-
             self.__on_exit_handler = OnProcessExit(target_action=self, on_exit=self.__on_exit)
             context.register_event_handler(self.__on_exit_handler)
         loop = context.asyncio_loop

@@ -5,13 +5,14 @@ import os
 from typing import TYPE_CHECKING, Iterable, List, Optional, Tuple
 
 from ..action import Action
+from ..launch_context import LaunchContext
 from ..launch_description import LaunchDescription
 from ..launch_description_entity import LaunchDescriptionEntity
 from ..launch_description_source import LaunchDescriptionSource
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
-    from ..launch_context import LaunchContext
     from ..some_substitutions_type import SomeSubstitutionsType
 
 ArgumentPair = Tuple[List[Substitution], List[Substitution]]
@@ -31,8 +32,8 @@ class IncludeLaunchDescription(Action):
                  launch_arguments: Optional[Iterable[Tuple[SomeSubstitutionsType,
                                                            SomeSubstitutionsType]]] = None,
                  **kwargs: object) -> None:
+        # late: launch_description_sources parse front-end files into actions (a cycle)
         from ..launch_description_sources import AnyLaunchDescriptionSource
-        from ..utilities import normalize_to_list_of_substitutions
 
         super().__init__(**kwargs)
         if isinstance(launch_description_source, LaunchDescription):
@@ -66,9 +67,6 @@ class IncludeLaunchDescription(Action):
         return [description] if description is not None else []
 
     def _try_get_arguments_names_without_context(self) -> List[str]:
-        from ..launch_context import LaunchContext
-        from ..utilities import perform_substitutions
-
         names = []
         for name, _ in self.__launch_arguments:
             try:
@@ -79,8 +77,6 @@ class IncludeLaunchDescription(Action):
 
     def execute(self, context: LaunchContext) -> List[LaunchDescriptionEntity]:
         """Load the description, check and set the arguments, return it to be visited."""
-        from ..utilities import perform_substitutions
-
         description = self.__source.get_launch_description(context)
         given = [(perform_substitutions(context, name), perform_substitutions(context, value))
                  for name, value in self.__launch_arguments]

@@ -4,7 +4,9 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List
 
 from ..action import Action
+from ..logging import get_logger
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -15,8 +17,6 @@ class LogInfo(Action):
     """Log `msg` (text and substitutions) at INFO on the 'launch.user' logger."""
 
     def __init__(self, *, msg: SomeSubstitutionsType, **kwargs: object) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__(**kwargs)
         self.__msg = normalize_to_list_of_substitutions(msg)
 
@@ -31,7 +31,4 @@ class LogInfo(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Log the message."""
-        from ..logging import get_logger
-        from ..utilities import perform_substitutions
-
         get_logger('launch.user').info(perform_substitutions(context, self.__msg))

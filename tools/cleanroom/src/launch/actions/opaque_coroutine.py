@@ -5,6 +5,7 @@ import asyncio
 from typing import TYPE_CHECKING, Any, Callable, Dict, Iterable, Optional
 
 from ..action import Action
+from ..event_handlers.on_shutdown import OnShutdown
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -37,8 +38,6 @@ class OpaqueCoroutine(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Start the coroutine and cancel it when the launch shuts down."""
-        from ..event_handlers.on_shutdown import OnShutdown
-
         args = self.__args if self.__ignore_context else [context, *self.__args]
         loop = context.asyncio_loop
         assert loop is not None, 'OpaqueCoroutine needs a running LaunchService'

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Dict, Optional
 
 from ..action import Action
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -40,8 +41,6 @@ class ResetLaunchConfigurations(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Reset."""
-        from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
-
         values: Dict[str, str] = {}
         for name, value in (self.__launch_configurations or {}).items():
             values[perform_substitutions(context, normalize_to_list_of_substitutions(name))] = \

@@ -5,9 +5,12 @@ import asyncio
 from typing import TYPE_CHECKING, Dict, Iterable, List, Optional, Sequence, Tuple, Union
 
 from ..action import Action
+from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..event_handler import EventHandler
+from ..event_handlers.on_shutdown import OnShutdown
 from ..events import TimerEvent
 from ..launch_description_entity import LaunchDescriptionEntity
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .scope_actions import (
     PopEnvironment,
     PopLaunchConfigurations,
@@ -52,8 +55,6 @@ class TimerAction(Action):
                  actions: Iterable[LaunchDescriptionEntity],
                  cancel_on_shutdown: Union[bool, SomeSubstitutionsType] = True,
                  **kwargs: object) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__(**kwargs)
         self.__period = float(period) if isinstance(period, (int, float)) \
             else normalize_to_list_of_substitutions(period)
@@ -102,10 +103,6 @@ class TimerAction(Action):
 
     def execute(self, context: LaunchContext) -> None:
         """Start the timer."""
-        from ..conditions.evaluate_condition_expression import evaluate_condition_expression
-        from ..event_handlers.on_shutdown import OnShutdown
-        from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
-
         period = self.__period if isinstance(self.__period, float) \
             else float(perform_substitutions(context, self.__period))
         loop = context.asyncio_loop

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List
 
 from ..substitution import Substitution
+from ..utilities import perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -29,8 +30,6 @@ def evaluate_condition_expression(context: LaunchContext, expression: List[Subst
     Anything else raises InvalidConditionExpressionError: a typo like
     'Ture' must not silently count as false.
     """
-    from ..utilities import perform_substitutions
-
     expanded = perform_substitutions(context, expression)
     lowered = expanded.strip().lower()
     if lowered in VALID_TRUE_EXPRESSIONS:

@@ -5,6 +5,7 @@ import warnings
 from typing import TYPE_CHECKING, Optional
 
 from ..condition import Condition
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -31,8 +32,6 @@ class LaunchConfigurationEquals(Condition):
 
     def __init__(self, launch_configuration_name: str,
                  expected_value: Optional[SomeSubstitutionsType]) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         _warn_deprecated(launch_configuration_name, expected_value)
         self.__name = launch_configuration_name
         self.__expected = None if expected_value is None \
@@ -40,8 +39,6 @@ class LaunchConfigurationEquals(Condition):
         super().__init__(predicate=self._predicate_func)
 
     def _predicate_func(self, context: LaunchContext) -> bool:
-        from ..utilities import perform_substitutions
-
         value = context.launch_configurations.get(self.__name)
         if self.__expected is None:
             return value is None

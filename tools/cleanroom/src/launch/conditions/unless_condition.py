@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ..condition import Condition
+from ..utilities import normalize_to_list_of_substitutions
 from .evaluate_condition_expression import evaluate_condition_expression
 
 if TYPE_CHECKING:
@@ -15,8 +16,6 @@ class UnlessCondition(Condition):
     """True when the expression expands to 'false' or '0' (case-insensitive)."""
 
     def __init__(self, predicate_expression: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         self.__expression = normalize_to_list_of_substitutions(predicate_expression)
         super().__init__(predicate=self._predicate_func)
 

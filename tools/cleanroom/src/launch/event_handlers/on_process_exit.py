@@ -11,6 +11,7 @@ class OnProcessExit(OnActionEventBase):
 
     def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
                  on_exit: object, **kwargs: object) -> None:
+        # late: actions import event_handlers (ExecuteProcess on_exit), so not at module level
         from ..actions.execute_process import ExecuteProcess
 
         super().__init__(action_matcher=target_action, on_event=on_exit,

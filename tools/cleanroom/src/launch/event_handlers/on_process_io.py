@@ -17,6 +17,7 @@ class OnProcessIO(OnActionEventBase):
     def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
                  on_stdin: Optional[Callable] = None, on_stdout: Optional[Callable] = None,
                  on_stderr: Optional[Callable] = None, **kwargs: object) -> None:
+        # late: actions import event_handlers (ExecuteProcess on_exit), so not at module level
         from ..actions.execute_process import ExecuteProcess
 
         self.__by_fd = {0: on_stdin, 1: on_stdout, 2: on_stderr}

@@ -8,6 +8,7 @@ import socket
 from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -22,8 +23,6 @@ class AnonName(Substitution):
     """
 
     def __init__(self, name: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__name = normalize_to_list_of_substitutions(name)
 
@@ -44,8 +43,6 @@ class AnonName(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the anonymous name for this base name."""
-        from ..utilities import perform_substitutions
-
         name = perform_substitutions(context, self.__name)
         key = 'anon' + name
         if key not in context.launch_configurations:

@@ -3,7 +3,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Iterable, List
 
+from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -11,8 +13,6 @@ if TYPE_CHECKING:
 
 
 def _truth(context: LaunchContext, subs: List[Substitution]) -> bool:
-    from ..conditions.evaluate_condition_expression import evaluate_condition_expression
-
     return evaluate_condition_expression(context, subs)
 
 
@@ -24,8 +24,6 @@ class NotSubstitution(Substitution):
     """'true' if the value is false, and the reverse."""
 
     def __init__(self, value: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__value = normalize_to_list_of_substitutions(value)
 
@@ -45,8 +43,6 @@ class NotSubstitution(Substitution):
 
 class _BinarySubstitution(Substitution):
     def __init__(self, left: SomeSubstitutionsType, right: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__left = normalize_to_list_of_substitutions(left)
         self.__right = normalize_to_list_of_substitutions(right)
@@ -86,8 +82,6 @@ class OrSubstitution(_BinarySubstitution):
 
 class _ManySubstitution(Substitution):
     def __init__(self, *args: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__args = [normalize_to_list_of_substitutions(a) for a in args]
 

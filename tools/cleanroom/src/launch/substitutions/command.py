@@ -5,7 +5,9 @@ import shlex
 import subprocess
 from typing import TYPE_CHECKING, List
 
+from ..logging import get_logger
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -24,8 +26,6 @@ class Command(Substitution):
 
     def __init__(self, command: SomeSubstitutionsType, *,
                  on_stderr: SomeSubstitutionsType = 'fail') -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__command = normalize_to_list_of_substitutions(command)
         self.__on_stderr = normalize_to_list_of_substitutions(on_stderr)
@@ -46,9 +46,6 @@ class Command(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Run the command in the launch environment and return its stdout."""
-        from ..logging import get_logger
-        from ..utilities import perform_substitutions
-
         command = perform_substitutions(context, self.__command)
         on_stderr = perform_substitutions(context, self.__on_stderr)
         if on_stderr not in _ON_STDERR:

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List, Optional
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -16,8 +17,6 @@ class EnvironmentVariable(Substitution):
 
     def __init__(self, name: SomeSubstitutionsType, *,
                  default_value: Optional[SomeSubstitutionsType] = None) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__name = normalize_to_list_of_substitutions(name)
         self.__default_value = None if default_value is None \
@@ -39,8 +38,6 @@ class EnvironmentVariable(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the value; SubstitutionFailure if unset and there is no default."""
-        from ..utilities import perform_substitutions
-
         name = perform_substitutions(context, self.__name)
         value = context.environment.get(name)
         if value is not None:

@@ -4,14 +4,13 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, Any, List
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
 
 
 def _normalize(value: Any) -> List[Substitution]:
-    from ..utilities import normalize_to_list_of_substitutions
-
     if value is None:
         return normalize_to_list_of_substitutions('')
     if isinstance(value, bool):
@@ -72,8 +71,6 @@ class EqualsSubstitution(Substitution):
         return f'{type(self).__name__}({left} {right})'
 
     def _equal(self, context: LaunchContext) -> bool:
-        from ..utilities import perform_substitutions
-
         return values_equal(perform_substitutions(context, self.__left),
                             perform_substitutions(context, self.__right))
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -15,8 +16,6 @@ class FileContent(Substitution):
     """The text of the file at `path`; fails naming the path if it cannot be read."""
 
     def __init__(self, path: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__path = normalize_to_list_of_substitutions(path)
 
@@ -31,8 +30,6 @@ class FileContent(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the file's text."""
-        from ..utilities import perform_substitutions
-
         path = perform_substitutions(context, self.__path)
         try:
             with open(path) as f:

@@ -5,6 +5,7 @@ import shutil
 from typing import TYPE_CHECKING, List
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -16,8 +17,6 @@ class FindExecutable(Substitution):
     """shutil.which(name) on PATH of `context.environment`; fails if not found."""
 
     def __init__(self, *, name: SomeSubstitutionsType) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__name = normalize_to_list_of_substitutions(name)
 
@@ -32,8 +31,6 @@ class FindExecutable(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the executable's path."""
-        from ..utilities import perform_substitutions
-
         name = perform_substitutions(context, self.__name)
         found = shutil.which(name, path=context.environment.get('PATH'))
         if found is None:

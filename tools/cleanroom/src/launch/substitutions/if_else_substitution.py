@@ -3,7 +3,9 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, List
 
+from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -16,8 +18,6 @@ class IfElseSubstitution(Substitution):
     def __init__(self, condition: SomeSubstitutionsType,
                  if_value: SomeSubstitutionsType = '',
                  else_value: SomeSubstitutionsType = '') -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         if if_value == else_value == '':
             raise RuntimeError('One of if_value and else_value must be specified')
@@ -49,9 +49,6 @@ class IfElseSubstitution(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the chosen value."""
-        from ..conditions.evaluate_condition_expression import evaluate_condition_expression
-        from ..utilities import perform_substitutions
-
         chosen = self.__if_value if evaluate_condition_expression(context, self.__condition) \
             else self.__else_value
         return perform_substitutions(context, chosen)

@@ -4,6 +4,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING, List, Optional
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -16,8 +17,6 @@ class LaunchConfiguration(Substitution):
 
     def __init__(self, variable_name: SomeSubstitutionsType, *,
                  default: Optional[object] = None) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__variable_name = normalize_to_list_of_substitutions(variable_name)
         if default is None:
@@ -43,8 +42,6 @@ class LaunchConfiguration(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the configuration's value; SubstitutionFailure if unset and no default."""
-        from ..utilities import perform_substitutions
-
         name = perform_substitutions(context, self.__variable_name)
         if name in context.launch_configurations:
             return str(context.launch_configurations[name])

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..logging import launch_config
 from ..substitution import Substitution
 
 if TYPE_CHECKING:
@@ -18,6 +19,4 @@ class LaunchLogDir(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the folder."""
-        from ..logging import launch_config
-
         return launch_config.log_dir

@@ -5,6 +5,7 @@ import os
 from typing import TYPE_CHECKING, Iterable, List
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -15,8 +16,6 @@ class PathJoinSubstitution(Substitution):
     """os.path.join of components, each of which may itself be substitutions."""
 
     def __init__(self, substitutions: Iterable[SomeSubstitutionsType]) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__components = [normalize_to_list_of_substitutions(c) for c in substitutions]
 
@@ -36,7 +35,5 @@ class PathJoinSubstitution(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Return the joined path."""
-        from ..utilities import perform_substitutions
-
         parts = [perform_substitutions(context, c) for c in self.__components]
         return os.path.join(*parts) if parts else ''

@@ -5,6 +5,7 @@ import importlib
 from typing import TYPE_CHECKING, Any, Dict, Iterable, List
 
 from ..substitution import Substitution
+from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from .substitution_failure import SubstitutionFailure
 
 if TYPE_CHECKING:
@@ -21,8 +22,6 @@ class PythonExpression(Substitution):
 
     def __init__(self, expression: SomeSubstitutionsType,
                  python_modules: Iterable[SomeSubstitutionsType] = ('math',)) -> None:
-        from ..utilities import normalize_to_list_of_substitutions
-
         super().__init__()
         self.__expression = normalize_to_list_of_substitutions(expression)
         self.__python_modules = [normalize_to_list_of_substitutions(m) for m in python_modules]
@@ -43,8 +42,6 @@ class PythonExpression(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Evaluate the expression and return str() of the result."""
-        from ..utilities import perform_substitutions
-
         namespace: Dict[str, Any] = {}
         for module_subs in self.__python_modules:
             name = perform_substitutions(context, module_subs)

@@ -2,6 +2,7 @@
 import os
 from typing import Any, List
 
+from .._text_substitution import TextSubstitution
 from ..substitution import Substitution
 
 
@@ -11,8 +12,6 @@ def normalize_to_list_of_substitutions(subs: Any) -> List[Substitution]:
     Accepts str, os.PathLike, Substitution, or an iterable of those (numbers
     are rejected: launch files must say what text they mean).
     """
-    from ..substitutions.text_substitution import TextSubstitution
-
     def one(item: Any) -> Substitution:
         if isinstance(item, Substitution):
             return item

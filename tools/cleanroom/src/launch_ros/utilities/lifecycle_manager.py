@@ -54,6 +54,7 @@ class LifecycleManager:
         return self.__action.node_name
 
     def start(self) -> None:
+        # deferred: ROS messages and rclpy load only when a lifecycle node is managed
         import lifecycle_msgs.msg
         import lifecycle_msgs.srv
 
@@ -62,6 +63,7 @@ class LifecycleManager:
         name = self.node_name
         self.__client = node.create_client(lifecycle_msgs.srv.ChangeState,
                                            f'{name}/change_state')
+        # deferred with the imports above
         from rclpy.event_handler import SubscriptionEventCallbacks
 
         node.create_subscription(
@@ -95,6 +97,7 @@ class LifecycleManager:
             self._request_transition(transition_id, stopped)
 
     def _request_transition(self, transition_id: int, stopped: threading.Event) -> None:
+        # deferred: see start()
         import lifecycle_msgs.srv
 
         while not self.__client.wait_for_service(timeout_sec=_SERVICE_POLL):
