@@ -18,7 +18,7 @@ LINT_IMPORTS = Path(sys.executable).parent / 'lint-imports'
 
 
 def test_import_contract_is_kept():
-    result = subprocess.run([str(LINT_IMPORTS), '--no-cache', '--config', str(CONFIG)],
+    result = subprocess.run([str(LINT_IMPORTS), '--no-cache', '--no-logo', '--config', str(CONFIG)],
                             cwd=ROOT, capture_output=True, text=True, check=False)
     assert result.returncode == 0, (
         f'lint-imports found a broken import contract (exit {result.returncode}):\n'
