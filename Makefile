@@ -19,10 +19,14 @@ test: setup
 lint: setup
 	$(PY) -m ruff check .
 
+# The lock is resolved from base.in by pip-tools (pip's resolver, pip's index
+# settings), not frozen from an environment: every pin is a distribution that
+# something asks for.  Existing pins are kept unless LOCK_FLAGS=--upgrade.
 lock:
 	rm -rf build/lockenv && python3 -m venv build/lockenv
-	build/lockenv/bin/pip install -q -r requirements/base.in
-	build/lockenv/bin/pip freeze | grep -v -E '^-e|@ file' > requirements/lock.txt
+	build/lockenv/bin/pip install -q pip-tools==7.6.2
+	build/lockenv/bin/pip-compile -q --strip-extras --no-emit-index-url --no-emit-find-links \
+		$(LOCK_FLAGS) --output-file requirements/lock.txt requirements/base.in
 
 clean:
 	rm -rf build site
