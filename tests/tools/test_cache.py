@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import shutil
 
+import nbformat
 import pytest
 from textbook import cache, execute, paths
 from textbook.lessons import load
@@ -29,10 +30,20 @@ def test_key_is_stable_for_unchanged_content(tmp_path, snippets):
     assert key_of(path, snippets) == key_of(path, snippets)
 
 
-def test_key_changes_with_the_lesson_text(tmp_path, snippets):
+def test_key_changes_with_the_code_cells_not_with_prose(tmp_path, snippets):
     path = write_lesson(tmp_path, code_cells("print('alpha_pkg')"))
     before = key_of(path, snippets)
-    path.write_text(path.read_text() + "\nOne more sentence.\n")
+    path.write_text(path.read_text().replace("# Demo", "# Demo\n\nOne more sentence."))
+    assert key_of(path, snippets) == before, "a prose edit changed the key"
+    path.write_text(path.read_text().replace("print('alpha_pkg')", "print('alpha_pkg', 2)"))
+    assert key_of(path, snippets) != before
+
+
+def test_key_changes_with_cell_tags(tmp_path, snippets):
+    path = write_lesson(tmp_path, code_cells("print(1)"))
+    before = key_of(path, snippets)
+    path.write_text(path.read_text().replace("```{code-cell} ipython3",
+                                             "```{code-cell} ipython3\n:tags: [solution]"))
     assert key_of(path, snippets) != before
 
 
@@ -79,6 +90,8 @@ def test_key_changes_with_the_ros_stack(tmp_path, snippets, monkeypatch):
 def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
     monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
     monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")
+    # the tree may change meanwhile (an editor, a build); only the lesson matters here
+    monkeypatch.setattr(cache, "tools_fingerprint", lambda: "tools")
     path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
     runs = []
     real_execute = execute.execute
@@ -95,3 +108,23 @@ def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
     assert len(runs) == 2, "a changed lesson was not executed again"
     assert "changed" in first.read_text()
     shutil.rmtree(tmp_path / "cache")
+
+
+def test_a_prose_edit_executes_nothing_and_shows_the_new_prose(tmp_path, monkeypatch):
+    monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
+    monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")
+    # the tree may change meanwhile (an editor, a build); only the lesson matters here
+    monkeypatch.setattr(cache, "tools_fingerprint", lambda: "tools")
+    path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
+    runs = []
+    real_execute = execute.execute
+    monkeypatch.setattr(execute, "execute", lambda lesson: runs.append(1) or real_execute(lesson))
+
+    first = nbformat.read(execute.publish(load(path)), as_version=4)
+    path.write_text(path.read_text().replace("# Demo", "# Demo\n\nA typo fixed."))
+    second = nbformat.read(execute.publish(load(path)), as_version=4)
+    assert len(runs) == 1, "a prose-only edit executed the lesson again"
+    assert "A typo fixed." in second.cells[0].source
+    outputs = [[cell.outputs for cell in nb.cells if cell.cell_type == "code"]
+               for nb in (first, second)]
+    assert outputs[0] == outputs[1] and outputs[0][0], "the cached outputs were not kept"

@@ -1,12 +1,15 @@
 """Content-addressed cache of executed lessons.
 
 A lesson is executed again only when something that can change its output
-changed: its text, the snippet packages it includes or runs, or the tools
-that execute it (this package's execution code, labkit, the clean-room
-launch, the pinned packages).
+changed: its code cells (their source and tags), the snippet packages it
+includes or runs, the tools that execute it (this package's execution
+code, labkit, the clean-room launch, the pinned packages) or the ROS stack.
+Prose is not part of the key: a cached result is merged into the lesson's
+current prose (:func:`merge_outputs`), so fixing a typo executes nothing.
 """
 from __future__ import annotations
 
+import copy
 import fcntl
 import importlib.util
 import os
@@ -65,11 +68,35 @@ def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]
     return packages + [s.path for s in lesson.snippets]
 
 
+def code_text(lesson: Lesson) -> str:
+    """What of the lesson is executed: each code cell's tags and source, in order."""
+    return "\n".join(f"{sorted(cell.metadata.get('tags', []))}\n{cell.source}"
+                     for cell in lesson.notebook.cells if cell.cell_type == "code")
+
+
 def lesson_key(lesson: Lesson, root: Path | None = None) -> str:
     """The cache key of ``lesson`` (``root``: the snippets folder)."""
     deps = snippet_dependencies(lesson, root)
-    return hash_text(lesson.text, hash_paths(deps, base=(root or paths.SNIPPETS).parent),
+    return hash_text(code_text(lesson), hash_paths(deps, base=(root or paths.SNIPPETS).parent),
                      tools_fingerprint())
+
+
+def merge_outputs(lesson: Lesson, executed: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """The lesson's current notebook (its prose as it is now) with the outputs of
+    ``executed``, a run of the same code cells."""
+    merged = copy.deepcopy(lesson.notebook)
+    ran = [cell for cell in executed.cells if cell.cell_type == "code"]
+    mine = [cell for cell in merged.cells if cell.cell_type == "code"]
+    if [cell.source for cell in ran] != [cell.source for cell in mine]:
+        raise ValueError(f"{lesson.source}: the cached run is of other code cells")
+    for cell, result in zip(mine, ran, strict=True):
+        cell.outputs = result.outputs
+        cell.execution_count = result.execution_count
+        cell.metadata = result.metadata
+    for key in ("language_info", "widgets"):
+        if key in executed.metadata:
+            merged.metadata[key] = executed.metadata[key]
+    return merged
 
 
 def cached(key: str) -> nbformat.NotebookNode | None:

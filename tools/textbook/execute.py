@@ -149,7 +149,7 @@ def executed(lesson: Lesson) -> nbformat.NotebookNode:
     with cache.exclusive(key):
         hit = cache.cached(key)
         if hit is not None:
-            return hit
+            return cache.merge_outputs(lesson, hit)
         notebook = execute(lesson)
         cache.store(key, notebook)
         return notebook

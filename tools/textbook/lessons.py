@@ -66,6 +66,8 @@ def load(path: Path) -> Lesson:
     notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
                                        "language": "python"}
     notebook.metadata.pop("jupytext", None)
+    for index, cell in enumerate(notebook.cells):  # the same lesson, the same notebook
+        cell.id = f"cell-{index}"
     return Lesson(path, text, meta, notebook, used)
 
 
