@@ -1,6 +1,6 @@
 """Exercise 6.2.2: "turtle" from its YAML file, one value changed for a demo.
 
-    ros2 launch ch06_solutions ex62_turtle_demo.launch.py
+    ros2 launch my_ws_exercises ex62_turtle_demo.launch.py
 """
 from launch import LaunchDescription
 from launch.substitutions import PathJoinSubstitution
@@ -10,7 +10,7 @@ from launch_ros.substitutions import FindPackageShare
 
 def generate_launch_description():
     turtle_params = PathJoinSubstitution(
-        [FindPackageShare('ch06_solutions'), 'config', 'ex62_turtle.yaml'])
+        [FindPackageShare('my_ws_exercises'), 'config', 'ex62_turtle.yaml'])
     return LaunchDescription([
         Node(
             package='my_robot_pkg',
