@@ -30,7 +30,7 @@ ROBOTS = ('/robot1/robot_controller', '/robot2/robot_controller')
 #: `ros2 launch --show-args` never starts anything; this only stops a hang.
 SHOW_ARGS_TIMEOUT = 60
 ARGUMENT_HEADER = re.compile(r"^    '(?P<name>[^']+)':$")
-DEFAULT_LINE = re.compile(r"^        \(default: '(?P<value>.*)'\)$")
+DEFAULT_LINE = re.compile(r"^        \(default: (?P<value>.*)\)$")
 NO_DESCRIPTION = ('no description given', 'One of: ')
 
 
@@ -40,6 +40,11 @@ class ShownArgument:
 
     description: str
     default: str | None  # None: required (no default)
+
+
+def _unquoted(text: str) -> str:
+    """'0.3' -> 0.3; a substitution's description (no quotes) stays as it is."""
+    return text[1:-1] if len(text) >= 2 and text[0] == text[-1] == "'" else text
 
 
 def show_args(package: StudentPackage, launch_file: str) -> tuple[dict[str, ShownArgument], str]:
@@ -57,13 +62,14 @@ def show_args(package: StudentPackage, launch_file: str) -> tuple[dict[str, Show
             current.append(line)
     shown = {}
     for name, lines in blocks.items():
-        defaults = [m['value'] for line in lines if (m := DEFAULT_LINE.match(line))]
+        defaults = [_unquoted(m['value']) for line in lines
+                    if (m := DEFAULT_LINE.match(line))]
         text = ' '.join(line.strip() for line in lines if not DEFAULT_LINE.match(line))
         shown[name] = ShownArgument(text, defaults[0] if defaults else None)
     return shown, (result.stdout + result.stderr).strip()
 
 
-def _parameters(nodes: tuple[str, ...]) -> Any:
+def parameters_of(nodes: tuple[str, ...]) -> Any:
     """An `inspect` for probe(): these nodes' parameters (None for a node that does not answer)."""
     def inspect(snapshot: GraphSnapshot) -> dict[str, dict[str, Any] | None]:
         found: dict[str, dict[str, Any] | None] = {}
@@ -133,7 +139,7 @@ def _arguments_listed(verdict: Verdict, package: StudentPackage) -> None:
 
 
 def _defaults(verdict: Verdict, package: StudentPackage) -> bool:
-    run = probe(package, ROVER_FILE, (CONTROLLER, SENSOR), inspect=_parameters((CONTROLLER,)))
+    run = probe(package, ROVER_FILE, (CONTROLLER, SENSOR), inspect=parameters_of((CONTROLLER,)))
     if not requirements.launch_ran(verdict, run):
         return False
     source = 'with the defaults'
@@ -160,7 +166,7 @@ def _overrides(verdict: Verdict, package: StudentPackage) -> None:
     arguments = {'robot_name': 'explorer', 'max_speed': '1.5', 'use_sensor': 'false'}
     given = ' '.join(f'{name}:={value}' for name, value in arguments.items())
     run = probe(package, ROVER_FILE, (CONTROLLER,), arguments=arguments,
-                inspect=_parameters((CONTROLLER,)))
+                inspect=parameters_of((CONTROLLER,)))
     if not requirements.launch_ran(verdict, run):
         return
     source = 'from the command line'
@@ -227,7 +233,7 @@ def check_bringup_scoped(package: StudentPackage) -> Verdict:
     verdict = Verdict('Exercise 6.3.2 (two robots, each with its own name)')
     if not requirements.files_installed(verdict, package, ('launch/' + SCOPED_FILE,)):
         return verdict
-    run = probe(package, SCOPED_FILE, ROBOTS, inspect=_parameters(ROBOTS))
+    run = probe(package, SCOPED_FILE, ROBOTS, inspect=parameters_of(ROBOTS))
     if not requirements.launch_ran(verdict, run):
         return verdict
     _robot_names(verdict, run, 'scout', '(the default of robot_instance.launch.py)',
@@ -241,7 +247,7 @@ def check_bringup_scoped(package: StudentPackage) -> Verdict:
                    'scope it instead of moving it')
     requirements.names_unique(verdict, run)
     given = probe(package, SCOPED_FILE, ROBOTS, arguments={'robot_name': 'bravo'},
-                  inspect=_parameters(ROBOTS))
+                  inspect=parameters_of(ROBOTS))
     if not requirements.launch_ran(verdict, given):
         return verdict
     parameter_is(verdict, given, ROBOTS[1], 'robot_name', 'bravo',
