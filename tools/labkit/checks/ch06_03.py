@@ -250,8 +250,11 @@ def check_bringup_scoped(package: StudentPackage) -> Verdict:
                   inspect=parameters_of(ROBOTS))
     if not requirements.launch_ran(verdict, given):
         return verdict
+    leaked = ((given.inspected or {}).get(ROBOTS[1]) or {}).get('robot_name') == 'alpha'
     parameter_is(verdict, given, ROBOTS[1], 'robot_name', 'bravo',
                  'from robot_name:=bravo on the command line',
+                 "robot1's robot_name:=alpha is still set when the second include runs; put "
+                 'the first include in its own GroupAction([...])' if leaked else
                  'the second include must not set robot_name itself (no robot_name in its '
                  'launch_arguments), so that it keeps what whoever starts the launch gives; '
                  'scope the first include with GroupAction instead')
