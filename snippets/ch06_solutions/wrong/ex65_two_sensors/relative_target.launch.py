@@ -1,0 +1,15 @@
+# Mistake: remapped to the relative name 'ranges', which stays in each namespace (/front/ranges).
+# Verdict names: /rear/sensor_publisher publishes /rear/ranges instead of /ranges
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='my_robot_pkg', executable='sensor_publisher', namespace='front',
+             remappings=[('distance', 'ranges')], output='screen'),
+        Node(package='my_robot_pkg', executable='sensor_publisher', namespace='rear',
+             remappings=[('distance', 'ranges')], output='screen'),
+        Node(package='my_robot_pkg', executable='data_processor',
+             remappings=[('distance', 'ranges')], output='screen'),
+    ])
