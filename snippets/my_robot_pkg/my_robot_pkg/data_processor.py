@@ -35,13 +35,15 @@ class DataProcessor(Node):
 
 def main(args=None):
     rclpy.init(args=args)
-    node = DataProcessor()
+    node = None
     try:
+        node = DataProcessor()  # Ctrl+C may come while it starts: it is on the graph already
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 

@@ -28,13 +28,15 @@ class PrintCounter(Node):
 
 def main(args=None):
     rclpy.init(args=args)
-    node = PrintCounter()
+    node = None
     try:
+        node = PrintCounter()  # Ctrl+C may come while it starts: it is on the graph already
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 

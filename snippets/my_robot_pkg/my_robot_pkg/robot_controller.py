@@ -82,13 +82,15 @@ class RobotController(Node):
 
 def main(args=None):
     rclpy.init(args=args)
-    node = RobotController()
+    node = None
     try:
+        node = RobotController()  # Ctrl+C may come while it starts: it is on the graph already
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 

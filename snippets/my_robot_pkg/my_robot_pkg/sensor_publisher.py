@@ -39,13 +39,15 @@ class SensorPublisher(Node):
 
 def main(args=None):
     rclpy.init(args=args)
-    node = SensorPublisher()
+    node = None
     try:
+        node = SensorPublisher()  # Ctrl+C may come while it starts: it is on the graph already
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
     finally:
-        node.destroy_node()
+        if node is not None:
+            node.destroy_node()
         rclpy.try_shutdown()
 
 
