@@ -86,8 +86,9 @@ def case_workspace(tmp_path_factory, lesson_environment) -> Path:
         if case.kind == 'wrong':
             exercises.setup(*ids, workspace=workspace, package=case.package)
             answer = checks.find(case.exercise).wrong_answers()[case.name]
-            for relative, source in answer.items():
-                (workspace / 'src' / case.package / relative).write_bytes(source.read_bytes())
+            for relative, source in answer.items():  # named for its package, like the rest
+                exercises.copy_for_package(source, workspace / 'src' / case.package / relative,
+                                           case.package)
     result = subprocess.run([paths.executable('colcon'), 'build'], cwd=workspace,
                             capture_output=True, text=True, timeout=600)
     assert result.returncode == 0, result.stdout + result.stderr

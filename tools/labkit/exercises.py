@@ -34,7 +34,7 @@ def _package(workspace: str | os.PathLike | None, package: str) -> StudentPackag
     return StudentPackage(Path(workspace or Path.cwd()).resolve(), package)
 
 
-def _copy(source: Path, target: Path, package: str) -> None:
+def copy_for_package(source: Path, target: Path, package: str) -> None:
     """Copy a starter or solution file, naming the package `package`."""
     target.parent.mkdir(parents=True, exist_ok=True)
     data = source.read_bytes()
@@ -66,7 +66,7 @@ def setup(*exercise_ids: str, workspace: str | os.PathLike | None = None,
     for relative in wanted:
         destination = target.source / relative.replace(PACKAGE, package)
         if not destination.exists():
-            _copy(STARTERS / relative, destination, package)
+            copy_for_package(STARTERS / relative, destination, package)
             created.append(destination)
     for relative in wanted:
         path = target.source / relative.replace(PACKAGE, package)
@@ -93,7 +93,7 @@ def use_solution(exercise_id: str, force: bool = False,
             raise LabkitError(f'{target.shown(destination)} holds your own work; to replace it '
                               f"with the book's solution call "
                               f"labkit.exercises.use_solution({exercise_id!r}, force=True)")
-        _copy(exercise.solution(relative), destination, package)
+        copy_for_package(exercise.solution(relative), destination, package)
         print(f'{exercise.solution(relative).relative_to(STARTERS.parents[1])} -> '
               f'{target.shown(destination)}')
         copied.append(destination)
