@@ -5,6 +5,11 @@ IDs 1-89 are handed out under exclusive, non-blocking ``fcntl.flock`` locks on
 is held for as long as the lease lives.  Every environment built from a lease
 also limits discovery to this machine and carries a unique token, which lets
 the reaper find exactly the processes that this run started.
+
+The clean room's launch_testing leases domains the same way for its own
+runs (launch_testing/domain_isolation.py, also used by the clean-room tests
+and benchmark); the book keeps this copy because it must run where a real
+ROS 2 is installed and the clean room is not.
 """
 from __future__ import annotations
 

@@ -29,7 +29,6 @@ LOCALHOST discovery, and a temporary ROS_LOG_DIR.
 from __future__ import annotations
 
 import argparse
-import fcntl
 import os
 import resource
 import shutil
@@ -40,6 +39,8 @@ import tempfile
 import time
 from pathlib import Path
 from typing import Dict, List, Optional, Tuple
+
+from launch_testing.domain_isolation import lease_free_domain
 
 # Jazzy on a 2-core machine: N -> (all started, start to clean shutdown), seconds.
 REFERENCE: Dict[int, Tuple[Optional[float], Optional[float]]] = {
@@ -104,19 +105,10 @@ PACKAGE_XML = '''<?xml version="1.0"?>
 
 def lease_ros_domain() -> Tuple[int, int]:
     """Lock a free ROS domain ID in 1-89 (CONTRIBUTING.md allocator); return (id, fd)."""
-    lock_dir = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
-    lock_dir.mkdir(parents=True, exist_ok=True)
-    for domain_id in range(1, 90):
-        fd = os.open(lock_dir / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            os.close(fd)
-            continue
-        os.ftruncate(fd, 0)
-        os.write(fd, f'{os.getpid()}\n'.encode())
-        return domain_id, fd
-    sys.exit('no free ROS domain ID in 1-89')
+    lease = lease_free_domain()
+    if lease is None:
+        sys.exit('no free ROS domain ID in 1-89')
+    return lease
 
 
 def build_talker_package(root: Path) -> Path:

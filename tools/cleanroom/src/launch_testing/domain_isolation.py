@@ -18,15 +18,16 @@ from typing import Iterator, Optional
 DOMAIN_IDS = range(1, 90)
 
 
-def _lock_dir() -> Path:
+def lock_dir() -> Path:
     folder = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
     folder.mkdir(parents=True, exist_ok=True)
     return folder
 
 
-def _try_lease() -> Optional[tuple]:
+def lease_free_domain() -> Optional[tuple]:
+    """Lock the first free domain ID; (domain id, fd holding the lock), or None."""
     for domain_id in DOMAIN_IDS:
-        fd = os.open(_lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
+        fd = os.open(lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
         try:
             fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
@@ -49,13 +50,13 @@ def isolated_domain(timeout: float = 60.0) -> Iterator[Optional[int]]:
         yield None
         return
     deadline = time.monotonic() + timeout
-    lease = _try_lease()
+    lease = lease_free_domain()
     while lease is None:
         if time.monotonic() > deadline:
             raise RuntimeError('no free ROS_DOMAIN_ID in 1-89: every one is held by '
-                               f'another test run (locks in {_lock_dir()})')
+                               f'another test run (locks in {lock_dir()})')
         time.sleep(0.5)
-        lease = _try_lease()
+        lease = lease_free_domain()
     domain_id, fd = lease
     os.environ['ROS_DOMAIN_ID'] = str(domain_id)
     try:
