@@ -1,12 +1,11 @@
 # Mistake: params_file is declared, but the Node is given the default path itself, so
 #   params_file:=... on the command line changes nothing.
 # Verdict names: expected 'from_the_command_line' from params_file:=
-# (It finds its own share folder with ThisLaunchFileDir: the test builds each wrong answer
-#   under another package name, where FindPackageShare('my_ws_exercises') finds nothing.)
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument
-from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
+from launch.substitutions import PathJoinSubstitution
 from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
 
 
 def generate_launch_description():
@@ -14,14 +13,14 @@ def generate_launch_description():
         DeclareLaunchArgument(
             'params_file',
             default_value=PathJoinSubstitution(
-                [ThisLaunchFileDir(), '..', 'config', 'ex64_slow_robot.yaml']),
+                [FindPackageShare('my_ws_exercises'), 'config', 'ex64_slow_robot.yaml']),
             description='Parameter file of the controller (a full path)',
         ),
         Node(
             package='my_robot_pkg',
             executable='robot_controller',
             parameters=[PathJoinSubstitution(
-                [ThisLaunchFileDir(), '..', 'config', 'ex64_slow_robot.yaml'])],
+                [FindPackageShare('my_ws_exercises'), 'config', 'ex64_slow_robot.yaml'])],
             output='screen',
         ),
     ])

@@ -1,16 +1,15 @@
 # Mistake: the file's top-level key is controller, not the node's name robot_controller,
 #   so no parameter of the file reaches the node.
 # Verdict names: got robot_name 'my_robot', expected 'speedy'
-# (It finds its own share folder with ThisLaunchFileDir: the test builds each wrong answer
-#   under another package name, where FindPackageShare('my_ws_exercises') finds nothing.)
 from launch import LaunchDescription
-from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
+from launch.substitutions import PathJoinSubstitution
 from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
 
 
 def generate_launch_description():
     params_file = PathJoinSubstitution(
-        [ThisLaunchFileDir(), '..', 'config', 'ex64_fast_robot.yaml'])
+        [FindPackageShare('my_ws_exercises'), 'config', 'ex64_fast_robot.yaml'])
     return LaunchDescription([
         Node(
             package='my_robot_pkg',
