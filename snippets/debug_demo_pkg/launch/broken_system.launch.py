@@ -2,8 +2,8 @@
 
     ros2 launch debug_demo_pkg broken_system.launch.py
 
-Every process starts and nothing crashes, yet the monitor hears only one
-sensor of four.  Lesson 6.7 finds each fault with the ROS 2 tools;
+Every process starts and nothing crashes, yet the monitor hears none
+of its four sensors.  Lesson 6.7 finds each fault with the ROS 2 tools;
 fixed_system.launch.py is the same system repaired.
 """
 from launch import LaunchDescription
