@@ -1,0 +1,14 @@
+# Mistake: the filter is remapped to /distance_raw too: the data flows, but not on /distance
+#   where the rest of the robot expects it.
+# Verdict names: /distance should go from /sensor_publisher to /data_processor
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='my_robot_pkg', executable='sensor_publisher', name='sensor_publisher',
+             remappings=[('distance', 'distance_raw')], output='screen'),
+        Node(package='my_robot_pkg', executable='data_processor', name='data_processor',
+             remappings=[('distance', 'distance_raw')], output='screen'),
+    ])
