@@ -14,6 +14,9 @@ The lessons of this book use a handful of calls::
         print(run.output())           # what the launch printed so far
     # leaving the block stops the launch: Ctrl-C, as in a terminal
 
+A notebook run outside the book's build starts with `labkit.require_workspace()`:
+it says exactly what to install, build and source when something is missing.
+
 Exercises grade the student's own package with `labkit.exercises`
 (`setup`, `solution`, `check`; see EXERCISES.md).
 
@@ -33,9 +36,10 @@ from labkit.commands import launch, run, start, start_launch
 from labkit.drawing import draw_graph
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
 from labkit.graph import GraphSnapshot, Topic, graph, read_parameters
+from labkit.workspace import WorkspaceNotReadyError, require_workspace
 
 __all__ = [
     'Background', 'GraphSnapshot', 'LabkitError', 'NodesNotFoundError', 'ProcessExitedError',
-    'Topic', 'draw_graph', 'exercises', 'graph', 'launch', 'read_parameters', 'run', 'start',
-    'start_launch',
+    'Topic', 'WorkspaceNotReadyError', 'draw_graph', 'exercises', 'graph', 'launch',
+    'read_parameters', 'require_workspace', 'run', 'start', 'start_launch',
 ]

@@ -17,9 +17,10 @@ from pathlib import Path
 
 from labkit import checks
 from labkit.errors import LabkitError
-from labkit.grading.exercise import STARTERS
+from labkit.grading.exercise import SNIPPETS, STARTERS
 from labkit.grading.student_package import PACKAGE, StudentPackage
 from labkit.grading.verdict import ExerciseNotSolved, Verdict
+from labkit.workspace import require_snippets
 
 #: Set to 1 by the book's build: solution cells apply the solution, and a
 #: check that fails fails the build.
@@ -60,6 +61,7 @@ def setup(*exercise_ids: str, workspace: str | os.PathLike | None = None,
     Prints each file created or kept (returns nothing, so a notebook shows
     only that list).
     """
+    require_snippets(SNIPPETS)
     target = _package(workspace, package)
     wanted = _skeleton() + [f for i in exercise_ids for f in checks.find(i).files]
     created = []
@@ -83,6 +85,7 @@ def use_solution(exercise_id: str, force: bool = False,
     Without `force=True` a file you changed (it differs from the starter)
     is not overwritten.  Build afterwards: colcon build --packages-select my_ws_exercises
     """
+    require_snippets(SNIPPETS)
     exercise = checks.find(exercise_id)
     target = _package(workspace, package)
     copied = []

@@ -8,8 +8,10 @@ from pathlib import Path
 
 from labkit.grading.student_package import PACKAGE, StudentPackage
 from labkit.grading.verdict import Verdict
+from labkit.workspace import book_snippets
 
-SNIPPETS = Path(__file__).resolve().parents[3] / 'snippets'
+#: The repository's snippets/, or a copy of it (a pip-installed labkit, see book_snippets).
+SNIPPETS = book_snippets()
 STARTERS = SNIPPETS / 'starters' / PACKAGE
 
 
