@@ -67,6 +67,14 @@ def _pid_of(run: labkit.Background, node: str) -> str:
                      output).group(1)
 
 
+def _written(path: Path, text: str) -> str:
+    """The file once it holds `text` (a node writes its log file in batches)."""
+    deadline = time.monotonic() + HANG_GUARD
+    while text not in (content := path.read_text()) and time.monotonic() < deadline:
+        time.sleep(0.2)
+    return content
+
+
 def test_symptom_the_monitor_hears_no_sensor(broken):
     output = broken.output()
     assert ("No readings yet from: /range/front, /range/rear, /range/left, /range/right"
@@ -87,7 +95,8 @@ def test_fault4_node_runs_but_is_in_another_domain(broken, ros_env):
     assert f"ROS_DOMAIN_ID={OTHER_DOMAIN}".encode() in environ
     assert ros_env["ROS_DOMAIN_ID"] != OTHER_DOMAIN
     log_files = list(Path("~/.ros/log").expanduser().glob(f"*_{pid}_*.log"))
-    assert len(log_files) == 1 and "[right_sensor]: Publishing" in log_files[0].read_text()
+    assert len(log_files) == 1, log_files
+    assert "[right_sensor]: Publishing" in _written(log_files[0], "[right_sensor]: Publishing")
     elsewhere = _ros2({**ros_env, "ROS_DOMAIN_ID": OTHER_DOMAIN}, "node", "list",
                       shows=lambda out: "/right_sensor" in out)
     assert "/right_sensor" in elsewhere.split(), elsewhere
