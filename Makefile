@@ -2,7 +2,7 @@
 # both set up the project environment first (see tools/setup_env.sh).
 PY := .venv/bin/python
 
-.PHONY: setup serve site test lint lock clean
+.PHONY: setup serve site test lint lab lock clean
 
 setup:
 	@bash tools/setup_env.sh
@@ -18,6 +18,11 @@ test: setup
 
 lint: setup
 	$(PY) -m ruff check .
+
+# JupyterLab on lessons/ in the book's kernel (README: "Teaching from the
+# notebooks"); LAB_FLAGS=--no-browser in a container or over ssh.
+lab: setup
+	$(PY) -m textbook lab $(LAB_FLAGS)
 
 # The lock is resolved from base.in by pip-tools (pip's resolver, pip's index
 # settings), not frozen from an environment: every pin is a distribution that

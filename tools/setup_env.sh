@@ -84,4 +84,5 @@ if [ "$USE_SYSTEM_ROS" = 0 ]; then
   make_venv_a_ros_prefix
 fi
 "$venv/bin/python" -m ipykernel install --sys-prefix --name python3 >/dev/null
+"$venv/bin/python" -m textbook.lab_kernel --install >/dev/null  # the book's kernel (make lab)
 echo "$stamp" > "$venv/.setup-stamp"

@@ -1,9 +1,10 @@
-"""``python -m textbook build|serve|test|check`` - what the Makefile runs.
+"""``python -m textbook build|serve|test|check|lab`` - what the Makefile runs.
 
 - build: check and execute the lessons, build the site into site/ (strict);
 - serve: the same, served on http://127.0.0.1:8000, rebuilt on changes;
 - test:  the whole test suite (pytest, two workers), pytest's exit code;
-- check: only the lesson checks (metadata, includes, inline code), no kernel.
+- check: only the lesson checks (metadata, includes, inline code), no kernel;
+- lab:   JupyterLab on lessons/ with the book's kernel (textbook.lab).
 """
 from __future__ import annotations
 
@@ -11,7 +12,8 @@ import argparse
 import os
 import sys
 
-from . import paths
+from . import paths, workspace
+from .lab import lab_arguments, write_settings
 
 
 def _exec(*args: str) -> int:
@@ -58,6 +60,16 @@ def check(_: argparse.Namespace) -> int:
     return 0
 
 
+def lab(options: argparse.Namespace) -> int:
+    # Built here, once, rather than by the first kernel while JupyterLab waits for it.
+    print("building the snippets workspace (when it changed) ...", flush=True)
+    workspace.ensure_built()
+    print(f"JupyterLab on lessons/ at http://{options.address} with the book's kernel "
+          f"(Ctrl+C stops)", flush=True)
+    return _exec("jupyterlab", *lab_arguments(options.address, browser=not options.no_browser,
+                                              settings=write_settings()))
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m textbook", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
@@ -71,6 +83,10 @@ def main(argv: list[str] | None = None) -> int:
     testing.set_defaults(run=test)
     commands.add_parser("check", help="check lessons without executing them").set_defaults(
         run=check)
+    labbing = commands.add_parser("lab", help="JupyterLab on the lessons, in the book's kernel")
+    labbing.add_argument("--address", default="127.0.0.1:8888")
+    labbing.add_argument("--no-browser", action="store_true", help="do not open a browser")
+    labbing.set_defaults(run=lab)
     # Unknown arguments of `test` go to pytest, e.g. `python -m textbook test -k lessons`.
     options, extra = parser.parse_known_args(argv)
     if extra and options.command != "test":

@@ -87,14 +87,18 @@ def _failure(lesson: Lesson, notebook: nbformat.NotebookNode, index: int | None,
 
 
 def _workdir(lesson: Lesson, token: str) -> Path:
-    """A fresh folder like ``~/ros2_ws``: ``src/`` holds a copy of every book
+    return student_workspace(paths.RUNS / f"{lesson.path.stem}-{token}")
+
+
+def student_workspace(folder: Path) -> Path:
+    """Create ``folder`` like ``~/ros2_ws``: ``src/`` holds a copy of every book
     package of ``snippets/`` and room for the student's own package.
 
     Copies, not links: a lesson that edits, ``cp -r`` or ``sed -i``s a file in
     ``src/`` must never change ``snippets/``, and ``ls``/``find`` show plain
-    folders, as in a student's workspace.
+    folders, as in a student's workspace.  Shared by the book's build and the
+    lab kernel (lab_kernel.py), so both run a lesson in the same place.
     """
-    folder = paths.RUNS / f"{lesson.path.stem}-{token}"
     (folder / "src").mkdir(parents=True)
     for package in sorted(p.parent for p in paths.SNIPPETS.glob("*/package.xml")):
         shutil.copytree(package, folder / "src" / package.name,
