@@ -37,7 +37,8 @@ PROBE_CELL = textwrap.dedent("""
         'cwd': os.getcwd(),
         'src': sorted(os.listdir('src')),
         'labkit': labkit.__file__,
-        'workspace': labkit.require_workspace(),
+        'ready': labkit.require_workspace(),
+        'workspace': labkit.workspace.book_package_prefix(),
         'pid': os.getpid(),
     }))
 """)
@@ -100,6 +101,7 @@ def test_book_kernel_runs_a_cell_in_the_book_environment_and_leaves_nothing(ws_i
         # The snippets workspace sourced, labkit importable and satisfied.
         book_package = str(paths.WORKSPACE / "install" / "my_robot_pkg")
         assert book_package in seen["AMENT_PREFIX_PATH"].split(os.pathsep)
+        assert seen["ready"] is None
         assert seen["workspace"] == book_package
         assert Path(seen["labkit"]).resolve() == Path(labkit.__file__).resolve()
         # The working folder is a student workspace, as in the book's build.
@@ -131,7 +133,9 @@ def test_book_kernel_runs_a_cell_in_the_book_environment_and_leaves_nothing(ws_i
 def test_require_workspace_passes_with_the_book_workspace_sourced(ros_env, monkeypatch):
     for name, value in ros_env.items():
         monkeypatch.setenv(name, value)
-    assert labkit.require_workspace() == str(paths.WORKSPACE / "install" / "my_robot_pkg")
+    assert labkit.require_workspace() is None
+    assert workspace.missing_requirements() == []
+    assert workspace.book_package_prefix() == str(paths.WORKSPACE / "install" / "my_robot_pkg")
 
 
 def test_require_workspace_says_what_to_do_without_ros_or_workspace(monkeypatch, tmp_path):

@@ -75,11 +75,11 @@ def missing_requirements(env: dict[str, str] | None = None) -> list[str]:
     return missing
 
 
-def require_workspace() -> str:
+def require_workspace() -> None:
     """Check that ROS 2 and the book's workspace are sourced; call it in a lesson's first cell.
 
-    Returns the prefix of the book's package (for a notebook to show);
-    raises WorkspaceNotReadyError listing what is missing and what to do.
+    Returns nothing, so the cell shows nothing when all is there; raises
+    WorkspaceNotReadyError listing what is missing and what to do.
     """
     missing = missing_requirements()
     if missing:
@@ -87,7 +87,6 @@ def require_workspace() -> str:
             "This notebook needs ROS 2 Jazzy and the book's workspace, sourced in the "
             'shell that started Jupyter. Missing:\n'
             + ''.join(f'  - {item}\n' for item in missing) + '\n' + SETUP_STEPS)
-    return str(book_package_prefix())
 
 
 def _candidates() -> list[Path]:
