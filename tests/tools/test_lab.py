@@ -208,6 +208,17 @@ def test_labkit_outside_the_repository_uses_the_snippets_copied_into_the_workspa
     assert (ws / "src" / "my_ws_exercises" / "package.xml").is_file()
 
 
+def test_import_labkit_without_ros_says_what_to_do(tmp_path):
+    site, env = _labkit_outside(tmp_path)
+    # -S: no site-packages, so no rclpy, as in a Python where ROS 2 is not sourced.
+    result = subprocess.run([sys.executable, "-S", "-c", "import labkit"], cwd=tmp_path, env=env,
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode != 0
+    assert "labkit.workspace.WorkspaceNotReadyError" in result.stderr, result.stderr
+    assert "cannot import `rclpy`" in result.stderr
+    assert "source install/setup.bash" in result.stderr
+
+
 def _free_port() -> int:
     with socket.socket() as probe:
         probe.bind(("127.0.0.1", 0))

@@ -30,13 +30,17 @@ real ROS 2 install and with this project's clean-room one.  It inherits the
 ROS isolation (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE) of the notebook,
 which the book's build sets for every lesson.
 """
-from labkit import exercises
-from labkit.background import Background
-from labkit.commands import launch, run, start, start_launch
-from labkit.drawing import draw_graph
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
-from labkit.graph import GraphSnapshot, Topic, graph, read_parameters
-from labkit.workspace import WorkspaceNotReadyError, require_workspace
+from labkit.workspace import WorkspaceNotReadyError, require_ros_python, require_workspace
+
+# Without a sourced ROS 2, `import labkit` says what to do, not "No module named 'rclpy'".
+require_ros_python()
+
+from labkit import exercises  # noqa: E402
+from labkit.background import Background  # noqa: E402
+from labkit.commands import launch, run, start, start_launch  # noqa: E402
+from labkit.drawing import draw_graph  # noqa: E402
+from labkit.graph import GraphSnapshot, Topic, graph, read_parameters  # noqa: E402
 
 __all__ = [
     'Background', 'GraphSnapshot', 'LabkitError', 'NodesNotFoundError', 'ProcessExitedError',

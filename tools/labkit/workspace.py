@@ -89,6 +89,13 @@ def require_workspace() -> None:
             + ''.join(f'  - {item}\n' for item in missing) + '\n' + SETUP_STEPS)
 
 
+def require_ros_python() -> None:
+    """Raise the message of :func:`require_workspace` when rclpy cannot be imported
+    (labkit is built on it), so `import labkit` explains instead of failing on rclpy."""
+    if importlib.util.find_spec('rclpy') is None:
+        require_workspace()
+
+
 def _candidates() -> list[Path]:
     """Where the book's snippets/ may be, in order of preference."""
     found = []
