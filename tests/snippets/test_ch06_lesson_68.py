@@ -120,6 +120,7 @@ def test_running_check_gives_the_lessons_verdict(launch_file: str, ros_env, tmp_
     env = {**ros_env, "TMPDIR": str(tmp_path)}
     with labkit.launch("my_robot_pkg", launch_file, env=env, cwd=paths.WORKSPACE) as run:
         run.wait_for_nodes(NODES, timeout=HANG_GUARD)
+        run.wait_for_output(r"cmd_vel linear", timeout=HANG_GUARD)  # controller wired up
         report = speccheck.check_live(spec, window=3.0)
         params = labkit.read_parameters("/scout/robot_controller")
         still_running = run.running
