@@ -267,6 +267,59 @@ def test_lab_command_serves_the_lessons_with_only_the_book_kernel():
     assert f"Serving notebooks from local directory: {paths.LESSONS}" in output
 
 
+def _put_json(url: str, body: dict) -> dict:
+    request = urllib.request.Request(url, data=json.dumps(body).encode(), method="PUT",
+                                     headers={"Content-Type": "application/json"})
+    with urllib.request.urlopen(request, timeout=30) as response:
+        return json.load(response)
+
+
+def test_saving_a_lesson_from_the_lab_keeps_its_kernelspec(tmp_path):
+    source = sorted(paths.LESSONS.rglob("*.md"))[0]
+    original = source.read_text()
+    assert "name: python3" in original
+    (tmp_path / "lesson.md").write_text(original)
+    port = _free_port()
+    env = dict(os.environ, JUPYTER_TOKEN="textbook-test")
+    server = subprocess.Popen(
+        [sys.executable, "-m", "jupyterlab",
+         *lab.lab_arguments(f"127.0.0.1:{port}", browser=False,
+                            folder=lab.write_settings(tmp_path / "lab"), root=tmp_path)],
+        env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    url = f"http://127.0.0.1:{port}/api/contents/lesson.md?token=textbook-test"
+    try:
+        model = _wait_for(lambda: server.poll() is None and _get_json(
+            url + "&type=notebook&content=1"), 120, "JupyterLab to answer")
+        notebook = model["content"]
+        # What JupyterLab records once the book's kernel runs the lesson:
+        notebook["metadata"]["kernelspec"] = {
+            "display_name": lab_kernel.DISPLAY_NAME, "language": "python",
+            "name": lab_kernel.KERNEL_NAME}
+        notebook["cells"][-1]["source"] += "\n# edited in the lab"
+        _put_json(url, {"type": "notebook", "format": "json", "content": notebook})
+    finally:
+        server.terminate()
+        server.communicate(timeout=60)
+    saved = (tmp_path / "lesson.md").read_text()
+    assert "# edited in the lab" in saved  # the save happened...
+    assert lab_kernel.KERNEL_NAME not in saved  # ...and kept the lesson's kernel
+    assert saved.split("\n---", 1)[0] == original.split("\n---", 1)[0]
+
+
+def test_a_new_text_notebook_saved_from_the_lab_names_the_lessons_kernel(tmp_path):
+    book_spec = (f"kernelspec:\n  display_name: {lab_kernel.DISPLAY_NAME}\n  language: python\n"
+                 f"  name: {lab_kernel.KERNEL_NAME}\n")
+    model = {"type": "file", "format": "text",
+             "content": f"---\n{book_spec}---\n\n# A new page\n"}
+
+    class Contents:
+        root_dir = str(tmp_path)  # new.md does not exist there yet
+
+    lab.keep_lesson_front_matter(model=model, path="new.md", contents_manager=Contents())
+    assert model["content"] == ("---\nkernelspec:\n  display_name: Python 3\n  language: python\n"
+                                "  name: python3\n---\n\n# A new page\n")
+
+
 def test_make_lab_runs_the_lab_command():
     dry_run = subprocess.run(["make", "-n", "lab"], cwd=paths.ROOT, capture_output=True,
                              text=True, timeout=60)

@@ -67,7 +67,7 @@ def lab(options: argparse.Namespace) -> int:
     print(f"JupyterLab on lessons/ at http://{options.address} with the book's kernel "
           f"(Ctrl+C stops)", flush=True)
     return _exec("jupyterlab", *lab_arguments(options.address, browser=not options.no_browser,
-                                              settings=write_settings()))
+                                              folder=write_settings()))
 
 
 def main(argv: list[str] | None = None) -> int:
