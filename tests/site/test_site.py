@@ -41,5 +41,6 @@ def test_pilot_page_has_titled_snippets_and_a_download(site):
 def test_navigation_is_chapter_layer_lesson(site):
     text = page_text(site, "index.html")
     for label in ("Chapter 6 · Building Robot Systems", "L1 · Manual Foundation",
-                  "Set up and check your environment"):
+                  "Set up and check your environment", "Glossary",
+                  "Spec files: the system you meant to build"):
         assert label in text

@@ -22,7 +22,7 @@ def test_nav_is_chapter_then_layer_then_lesson_with_a_page_for_each_part():
         fake_lesson(6, "L2", "08_b.md", "AI B"),
         fake_lesson(6, "L1", "01_c.md", "Second"),
         fake_lesson(6, "L1", "00_d.md", "First"),
-    ], glossary="glossary.md")
+    ], glossary="glossary.md", reference=[("Spec files", "reference/spec-files.md")])
     assert nav == [
         {"Home": "index.md"},
         {"Chapter 6 · Building Robot Systems": [
@@ -38,6 +38,7 @@ def test_nav_is_chapter_then_layer_then_lesson_with_a_page_for_each_part():
             {"L1 · Manual Foundation": ["ch07/L1/index.md", {"Capstone A": "ch07/L1/00_a.ipynb"}]},
         ]},
         {"Glossary": "glossary.md"},
+        {"Reference": [{"Spec files": "reference/spec-files.md"}]},
     ]
 
 

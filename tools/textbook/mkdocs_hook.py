@@ -18,6 +18,7 @@ rebuild re-execute only lessons whose content or snippets changed.
 from __future__ import annotations
 
 import logging
+from pathlib import Path
 
 from bs4 import BeautifulSoup
 from mkdocs.exceptions import PluginError
@@ -48,11 +49,21 @@ def on_config(config):
         _glossary = glossary.load()
     except ValueError as error:
         raise PluginError(f"lesson check failed:\n{error}") from None
-    config["nav"] = build_nav(_lessons, glossary=GLOSSARY_PAGE)
+    config["nav"] = build_nav(_lessons, glossary=GLOSSARY_PAGE, reference=reference_pages())
     return config
 
 
 @event_priority(100)  # before mkdocs-jupyter turns .ipynb files into pages
+def reference_pages(docs: Path = paths.DOCS) -> list[tuple[str, str]]:
+    """(title, page) of every docs/reference/ page, titled by its first heading."""
+    pages = []
+    for path in sorted((docs / "reference").glob("*.md")):
+        heading = next((line[2:].strip() for line in path.read_text().splitlines()
+                        if line.startswith("# ")), path.stem)
+        pages.append((heading, path.relative_to(docs).as_posix()))
+    return pages
+
+
 def on_files(files: Files, config) -> Files:
     try:
         ensure_built()

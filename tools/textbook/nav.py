@@ -41,8 +41,12 @@ def _ordered(lessons: list[Lesson]) -> list[Lesson]:
 
 
 def build_nav(lessons: list[Lesson], home: str = "index.md",
-              glossary: str | None = None) -> list[Any]:
-    """The mkdocs ``nav`` value; lessons keep their file order inside a layer."""
+              glossary: str | None = None,
+              reference: list[tuple[str, str]] | None = None) -> list[Any]:
+    """The mkdocs ``nav`` value; lessons keep their file order inside a layer.
+
+    ``reference``: (title, page) of the reference pages, listed after the glossary.
+    """
     by_part = {key: list(group) for key, group in groupby(
         _ordered(lessons), key=lambda lesson: (lesson.meta["chapter"], lesson.meta["layer"]))}
     chapters = sorted({chapter for chapter, _ in PLANNED} | {c for c, _ in by_part})
@@ -56,6 +60,8 @@ def build_nav(lessons: list[Lesson], home: str = "index.md",
         nav.append({chapter_label(chapter): entries})
     if glossary:
         nav.append({"Glossary": glossary})
+    if reference:
+        nav.append({"Reference": [{title: page} for title, page in reference]})
     return nav
 
 
