@@ -133,8 +133,12 @@ def test_fault2_message_type_mismatch(broken, ros_env):
     assert _endpoints(info) == [
         ("PUBLISHER", "rear_sensor", "std_msgs/msg/Float64", "RELIABLE"),
         ("SUBSCRIPTION", "obstacle_monitor", "std_msgs/msg/Float32", "RELIABLE")], info
-    echo = _ros2(ros_env, "topic", "echo", "/range/rear", "--once")
-    assert "more than one type" in echo, echo
+    as_published = _ros2(ros_env, "topic", "echo", "/range/rear", "std_msgs/msg/Float64",
+                         "--once")
+    assert re.match(r"data: \d", as_published), as_published
+    as_expected = _ros2(ros_env, "topic", "echo", "/range/rear", "std_msgs/msg/Float32",
+                        "--once", "--timeout", "2")
+    assert "data:" not in as_expected, as_expected
 
 
 def test_fault3_qos_mismatch(broken, ros_env):
