@@ -53,7 +53,6 @@ def on_config(config):
     return config
 
 
-@event_priority(100)  # before mkdocs-jupyter turns .ipynb files into pages
 def reference_pages(docs: Path = paths.DOCS) -> list[tuple[str, str]]:
     """(title, page) of every docs/reference/ page, titled by its first heading."""
     pages = []
@@ -64,6 +63,7 @@ def reference_pages(docs: Path = paths.DOCS) -> list[tuple[str, str]]:
     return pages
 
 
+@event_priority(100)  # before mkdocs-jupyter turns .ipynb files into pages
 def on_files(files: Files, config) -> Files:
     try:
         ensure_built()
