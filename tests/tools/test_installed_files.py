@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import importlib.metadata as metadata
 import os
+import sysconfig
 from collections import defaultdict
 from collections.abc import Iterable
 from pathlib import Path
@@ -69,8 +70,18 @@ def describe(shared: dict[str, list[str]]) -> str:
                      for path, names in sorted(shared.items()))
 
 
+def environment_distributions() -> Iterable[metadata.Distribution]:
+    """The distributions the lock installs: those of this environment's site-packages.
+
+    Not whatever else is on sys.path (a sourced colcon workspace's egg-info
+    lists its *sources*, e.g. every ament_python package's setup.py).
+    """
+    folders = sorted({sysconfig.get_paths()[key] for key in ('purelib', 'platlib')})
+    return metadata.distributions(path=folders)
+
+
 def test_no_file_is_installed_by_two_distributions():
-    shared = shared_files(metadata.distributions())
+    shared = shared_files(environment_distributions())
     assert not shared, (
         f'{len(shared)} files are installed by more than one distribution; keep one of each '
         f'pair in requirements/base.in and regenerate the lock (make lock):\n'

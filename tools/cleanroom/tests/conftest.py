@@ -15,7 +15,6 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from ros_domains import lease_ros_domain
 
 # These are tests of our implementation: where a real ROS 2 is sourced, `launch`
 # and `ros2` are Jazzy's and the clean room is not installed (tools/setup_env.sh),
@@ -29,6 +28,9 @@ collect_ignore_glob = [] if CLEANROOM_IN_USE else ['*']
 @pytest.fixture(scope='session')
 def ros_domain() -> Iterator[int]:
     """Lease a domain for the session and export it (with LOCALHOST discovery)."""
+    # Imported here: the allocator is the clean room's launch_testing's, and over
+    # a real ROS 2 this conftest must load without it (nothing is collected then).
+    from ros_domains import lease_ros_domain
     domain_id, fd = lease_ros_domain()
     keys = ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE', 'ROS_LOCALHOST_ONLY')
     saved = {key: os.environ.get(key) for key in keys}
