@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import labkit
+import psutil
 import pytest
 from textbook import paths
 
@@ -94,7 +95,11 @@ def test_fault4_node_runs_but_is_in_another_domain(broken, ros_env):
     environ = Path(f"/proc/{pid}/environ").read_bytes().split(b"\0")
     assert f"ROS_DOMAIN_ID={OTHER_DOMAIN}".encode() in environ
     assert ros_env["ROS_DOMAIN_ID"] != OTHER_DOMAIN
-    log_files = list(Path("~/.ros/log").expanduser().glob(f"*_{pid}_*.log"))
+    # ~/.ros/log keeps the files of earlier runs, and an old process may have had
+    # this pid: only a file written since this process started is its own.
+    started = psutil.Process(int(pid)).create_time()
+    log_files = [path for path in Path("~/.ros/log").expanduser().glob(f"*_{pid}_*.log")
+                 if path.stat().st_mtime >= started]
     assert len(log_files) == 1, log_files
     assert "[right_sensor]: Publishing" in _written(log_files[0], "[right_sensor]: Publishing")
     elsewhere = _ros2({**ros_env, "ROS_DOMAIN_ID": OTHER_DOMAIN}, "node", "list",
