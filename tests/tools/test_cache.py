@@ -87,15 +87,22 @@ def test_key_changes_with_the_ros_stack(tmp_path, snippets, monkeypatch):
     assert key_of(path, snippets) != other_stack
 
 
-def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
+@pytest.fixture
+def runs(tmp_path, monkeypatch) -> list[int]:
+    """Each execution of a lesson appends to the list; cache and notebooks in tmp_path."""
     monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
     monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")
     # the tree may change meanwhile (an editor, a build); only the lesson matters here
     monkeypatch.setattr(cache, "tools_fingerprint", lambda: "tools")
-    path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
-    runs = []
+    executions: list[int] = []
     real_execute = execute.execute
-    monkeypatch.setattr(execute, "execute", lambda lesson: runs.append(1) or real_execute(lesson))
+    monkeypatch.setattr(execute, "execute",
+                        lambda lesson: executions.append(1) or real_execute(lesson))
+    return executions
+
+
+def test_unchanged_lesson_is_not_executed_again(tmp_path, runs):
+    path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
 
     first = execute.publish(load(path))
     output = first.read_text()
@@ -110,15 +117,8 @@ def test_unchanged_lesson_is_not_executed_again(tmp_path, monkeypatch):
     shutil.rmtree(tmp_path / "cache")
 
 
-def test_a_prose_edit_executes_nothing_and_shows_the_new_prose(tmp_path, monkeypatch):
-    monkeypatch.setattr(cache, "LESSON_CACHE", tmp_path / "cache")
-    monkeypatch.setattr(paths, "NOTEBOOKS", tmp_path / "notebooks")
-    # the tree may change meanwhile (an editor, a build); only the lesson matters here
-    monkeypatch.setattr(cache, "tools_fingerprint", lambda: "tools")
+def test_a_prose_edit_executes_nothing_and_shows_the_new_prose(tmp_path, runs):
     path = write_lesson(tmp_path, code_cells("import random\nprint(random.random())"))
-    runs = []
-    real_execute = execute.execute
-    monkeypatch.setattr(execute, "execute", lambda lesson: runs.append(1) or real_execute(lesson))
 
     first = nbformat.read(execute.publish(load(path)), as_version=4)
     path.write_text(path.read_text().replace("# Demo", "# Demo\n\nA typo fixed."))
