@@ -17,9 +17,16 @@ _SLEEP_UNTIL_SIGNALLED = (
 
 
 def KeepAliveProc() -> ExecuteProcess:  # noqa: N802 - Jazzy's name
-    """A process that does nothing until the launch stops it, so the launch stays up."""
+    """A process that does nothing until the launch stops it, so the launch stays up.
+
+    The shell starts Python with SIGINT ignored (an ignored signal stays ignored
+    across exec), so a shutdown that comes while Python is still starting is
+    not a KeyboardInterrupt exit; the handlers above take over once installed,
+    and SIGTERM follows a missed SIGINT after sigterm_timeout.
+    """
     return ExecuteProcess(
-        cmd=[sys.executable, '-c', _SLEEP_UNTIL_SIGNALLED],
+        cmd=['sh', '-c', 'trap "" INT; exec "$0" -c "$1"', sys.executable,
+             _SLEEP_UNTIL_SIGNALLED],
         name='keep_alive_proc', sigterm_timeout='1')
 
 
