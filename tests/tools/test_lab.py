@@ -13,7 +13,6 @@ import socket
 import subprocess
 import sys
 import textwrap
-import time
 import urllib.error
 import urllib.request
 from pathlib import Path
@@ -25,6 +24,8 @@ from jupyter_client.kernelspec import KernelSpecManager
 from jupyter_client.manager import start_new_kernel
 from labkit import workspace
 from textbook import lab, lab_kernel, paths, reaper
+
+from .._polling import wait_for
 
 # What a lesson's first cell would show, as JSON on one line.
 PROBE_CELL = textwrap.dedent("""
@@ -43,16 +44,6 @@ PROBE_CELL = textwrap.dedent("""
     }))
 """)
 
-
-def _wait_for(predicate, timeout: float, what: str):
-    """Poll ``predicate`` until it gives a true value (a state, not a duration)."""
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        value = predicate()
-        if value:
-            return value
-        time.sleep(0.2)
-    pytest.fail(f"gave up after {timeout} s waiting for {what}")
 
 
 def _run_cell(kc, code: str, timeout: float = 120) -> tuple[str, dict]:
@@ -112,10 +103,10 @@ def test_book_kernel_runs_a_cell_in_the_book_environment_and_leaves_nothing(ws_i
 
         # An interrupt reaches the cell through the launcher; the kernel stays.
         sleeping = kc.execute("import time; print('sleeping', flush=True); time.sleep(600)")
-        _wait_for(lambda: "sleeping" in kc.get_iopub_msg(timeout=60)["content"].get("text", ""),
+        wait_for(lambda: "sleeping" in kc.get_iopub_msg(timeout=60)["content"].get("text", ""),
                   120, "the sleeping cell to start")
         km.interrupt_kernel()
-        interrupted = _wait_for(lambda: _reply_to(kc, sleeping), 120, "the interrupted reply")
+        interrupted = wait_for(lambda: _reply_to(kc, sleeping), 120, "the interrupted reply")
         assert interrupted["content"].get("ename") == "KeyboardInterrupt", interrupted["content"]
         text, reply = _run_cell(kc, "print('still here')")
         assert reply["status"] == "ok" and "still here" in text, (reply, text)
@@ -244,7 +235,7 @@ def test_lab_command_serves_the_lessons_with_only_the_book_kernel():
     base = f"http://127.0.0.1:{port}"
     token = "token=textbook-test"
     try:
-        specs = _wait_for(lambda: server.poll() is None and _get_json(
+        specs = wait_for(lambda: server.poll() is None and _get_json(
             f"{base}/api/kernelspecs?{token}"), 120, "JupyterLab to answer")
         assert specs["default"] == lab_kernel.KERNEL_NAME
         assert set(specs["kernelspecs"]) == {lab_kernel.KERNEL_NAME}
@@ -288,7 +279,7 @@ def test_saving_a_lesson_from_the_lab_keeps_its_kernelspec(tmp_path):
         env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     url = f"http://127.0.0.1:{port}/api/contents/lesson.md?token=textbook-test"
     try:
-        model = _wait_for(lambda: server.poll() is None and _get_json(
+        model = wait_for(lambda: server.poll() is None and _get_json(
             url + "&type=notebook&content=1"), 120, "JupyterLab to answer")
         notebook = model["content"]
         # What JupyterLab records once the book's kernel runs the lesson:

@@ -7,11 +7,12 @@ only the public launch API, so it holds for a real ROS 2 install too.
 from __future__ import annotations
 
 import textwrap
-import time
 
 import psutil
 import pytest
 from jupyter_client.manager import start_new_kernel
+
+from .._polling import wait_for
 
 # A child that, like a well-behaved node, ends cleanly on SIGINT.
 SLEEPER = ("import signal, sys, time; "
@@ -42,15 +43,6 @@ def _children(pid: int) -> list[psutil.Process]:
     except psutil.NoSuchProcess:
         return []
 
-
-def _wait_for(predicate, timeout: float, what: str):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        value = predicate()
-        if value:
-            return value
-        time.sleep(0.2)
-    pytest.fail(f"gave up after {timeout} s waiting for {what}")
 
 
 @pytest.fixture
@@ -96,7 +88,7 @@ def test_interrupting_the_kernel_stops_every_launched_process(kernel):
     # Interrupt only once the node is up and publishing: a process interrupted
     # while still starting dies of the signal under Jazzy as well.
     early = _cell_output(kc, msg_id, until="Reading #1")
-    launched = _wait_for(lambda: _launched(kernel_pid), 30, "both launched processes")
+    launched = wait_for(lambda: _launched(kernel_pid), 30, "both launched processes")
 
     km.interrupt_kernel()
     reply = kc.get_shell_msg(timeout=60)
