@@ -109,7 +109,7 @@ def test_every_exercise_has_wrong_answers_that_say_what_the_check_reports():
 @pytest.mark.parametrize('case', CASES, ids=str)
 def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
         case: Case, case_workspace: Path, lesson_environment):
-    verdict = checks.find(case.exercise).check(StudentPackage(case_workspace, case.package))
+    verdict = checks.find(case.exercise).grade(StudentPackage(case_workspace, case.package))
     report = str(verdict)
     print(report)  # in the test log: what a student would read
     if case.kind == 'solution':
@@ -127,7 +127,7 @@ def test_a_file_changed_after_the_build_is_reported_before_anything_runs(
     original = source.read_bytes()
     source.write_bytes(original + b'# an edit not built yet\n')
     try:
-        verdict = exercise.check(StudentPackage(case_workspace, 'ex_starter'))
+        verdict = exercise.grade(StudentPackage(case_workspace, 'ex_starter'))
     finally:
         source.write_bytes(original)
     assert verdict.problems == [

@@ -123,7 +123,7 @@ def check(exercise_id: str, workspace: str | os.PathLike | None = None,
     Returns the verdict (a notebook shows it); in the book's build an
     unsolved exercise raises ExerciseNotSolved, so a broken solution fails CI.
     """
-    verdict = checks.find(exercise_id).check(_package(workspace, package))
+    verdict = checks.find(exercise_id).grade(_package(workspace, package))
     if _book_build() and not verdict.passed:
         raise ExerciseNotSolved(str(verdict))
     return verdict

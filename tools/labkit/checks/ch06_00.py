@@ -50,9 +50,8 @@ def _two_nodes_talk(verdict: Verdict, run: LaunchProbe) -> bool:
     return requirements.topic_link(verdict, run, '/distance', SENSOR, PROCESSOR) and ok
 
 
-def check_talk(package: StudentPackage) -> Verdict:
+def check_talk(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The two terminals of lesson 6.0 as one launch file."""
-    verdict = Verdict('Exercise 6.0.1 (two terminals in one file)')
     if requirements.files_installed(verdict, package, ('launch/' + TALK_FILE,)):
         _two_nodes_talk(verdict, probe(package, TALK_FILE, (SENSOR, PROCESSOR)))
     return verdict
@@ -74,9 +73,8 @@ def _shown(value: Any) -> str:
     return f'{value!r} ({kind})'
 
 
-def check_fast_sensor(package: StudentPackage) -> Verdict:
+def check_fast_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The sensor got publish_rate 5.0 and started at 5 Hz; the processor is unchanged."""
-    verdict = Verdict('Exercise 6.0.2 (a faster sensor)')
     if not requirements.files_installed(verdict, package, ('launch/' + FAST_FILE,)):
         return verdict
     run = probe(package, FAST_FILE, (SENSOR, PROCESSOR), inspect=_read_both)

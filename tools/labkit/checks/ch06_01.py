@@ -19,9 +19,8 @@ def _start_it(node: str, executable: str) -> str:
             f"name='{node.lstrip('/')}', output='screen')")
 
 
-def check_full_pipeline(package: StudentPackage) -> Verdict:
+def check_full_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Three nodes, and the data flows sensor -> processor -> controller -> /cmd_vel."""
-    verdict = Verdict('Exercise 6.1.1 (the whole robot)')
     if not requirements.files_installed(verdict, package, ('launch/' + PIPELINE_FILE,)):
         return verdict
     run = probe(package, PIPELINE_FILE, PIPELINE)
@@ -40,9 +39,8 @@ def check_full_pipeline(package: StudentPackage) -> Verdict:
     return verdict
 
 
-def check_front_sensor(package: StudentPackage) -> Verdict:
+def check_front_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The program sensor_publisher runs once, as the node /front_sensor, feeding the processor."""
-    verdict = Verdict('Exercise 6.1.2 (same program, another name)')
     if not requirements.files_installed(verdict, package, ('launch/' + FRONT_SENSOR_FILE,)):
         return verdict
     run = probe(package, FRONT_SENSOR_FILE, ('/front_sensor', '/data_processor'))

@@ -123,9 +123,8 @@ def started_rate(run: LaunchProbe) -> str | None:
     return rates[-1] if rates else None
 
 
-def check_turtle(package: StudentPackage) -> Verdict:
+def check_turtle(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Turtle's values reach the controller with the right types; the rest stay defaults."""
-    verdict = Verdict('Exercise 6.2.1 (a parameter file for turtle)')
     if not requirements.files_installed(verdict, package, (TURTLE_YAML, 'launch/' + TURTLE_FILE)):
         return verdict
     run = probe(package, TURTLE_FILE, (CONTROLLER,), inspect=_read_controller)
@@ -143,10 +142,9 @@ def check_turtle(package: StudentPackage) -> Verdict:
     return verdict
 
 
-def check_turtle_demo(package: StudentPackage) -> Verdict:
+def check_turtle_demo(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The demo launch = ex62_turtle.launch.py's values with max_linear_speed 0.35,
     and ex62_turtle.yaml itself unchanged (normal days still run at its speed)."""
-    verdict = Verdict('Exercise 6.2.2 (demo day)')
     if not requirements.files_installed(verdict, package, (TURTLE_YAML, 'launch/' + DEMO_FILE,
                                                            'launch/' + TURTLE_FILE)):
         return verdict
@@ -176,9 +174,8 @@ def check_turtle_demo(package: StudentPackage) -> Verdict:
     return verdict
 
 
-def check_scout_5hz(package: StudentPackage) -> Verdict:
+def check_scout_5hz(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Scout's values from robot_params.yaml, with the control loop started at 5 Hz."""
-    verdict = Verdict('Exercise 6.2.3 (scout at 5 Hz)')
     if not requirements.files_installed(verdict, package, ('launch/' + SCOUT_FILE,)):
         return verdict
     run = probe(package, SCOUT_FILE, (CONTROLLER,), inspect=_read_controller)

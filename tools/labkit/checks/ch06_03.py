@@ -203,9 +203,8 @@ def _invalid_choice_refused(verdict: Verdict, package: StudentPackage) -> None:
                      "choices=['true', 'false']")
 
 
-def check_rover(package: StudentPackage) -> Verdict:
+def check_rover(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Three arguments with defaults, used by the nodes, a condition and a refused choice."""
-    verdict = Verdict('Exercise 6.3.1 (a rover with three knobs)')
     if not requirements.files_installed(verdict, package, ('launch/' + ROVER_FILE,)):
         return verdict
     _arguments_listed(verdict, package)
@@ -228,9 +227,8 @@ def _robot_names(verdict: Verdict, run: LaunchProbe, second: str, source: str,
         parameter_is(verdict, run, ROBOTS[1], 'robot_name', second, source, fix)
 
 
-def check_bringup_scoped(package: StudentPackage) -> Verdict:
+def check_bringup_scoped(package: StudentPackage, verdict: Verdict) -> Verdict:
     """robot1 is alpha, robot2 keeps the default (or the command line's) robot_name."""
-    verdict = Verdict('Exercise 6.3.2 (two robots, each with its own name)')
     if not requirements.files_installed(verdict, package, ('launch/' + SCOPED_FILE,)):
         return verdict
     run = probe(package, SCOPED_FILE, ROBOTS, inspect=parameters_of(ROBOTS))

@@ -84,9 +84,8 @@ def parameter_files_found(verdict: Verdict, package: StudentPackage, run: Launch
     return not missing
 
 
-def check_fast_robot(package: StudentPackage) -> Verdict:
+def check_fast_robot(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The installed parameter file reaches the controller through FindPackageShare."""
-    verdict = Verdict('Exercise 6.4.1 (ship a second configuration)')
     if not files_installed(verdict, package, ('launch/' + FAST_FILE, FAST_CONFIG)):
         return verdict
     run = probe(package, FAST_FILE, (CONTROLLER,), inspect=parameters_of((CONTROLLER,)))
@@ -106,9 +105,8 @@ def check_fast_robot(package: StudentPackage) -> Verdict:
     return verdict
 
 
-def check_params_file(package: StudentPackage) -> Verdict:
+def check_params_file(package: StudentPackage, verdict: Verdict) -> Verdict:
     """params_file defaults to the installed slow configuration and can be overridden."""
-    verdict = Verdict('Exercise 6.4.2 (the parameter file as a launch argument)')
     if not files_installed(verdict, package, ('launch/' + PARAMS_FILE, SLOW_CONFIG)):
         return verdict
     shown, _ = show_args(package, PARAMS_FILE)

@@ -70,9 +70,8 @@ def _processor_reads_merged(verdict: Verdict, run: LaunchProbe) -> None:
                    + hint)
 
 
-def check_two_sensors(package: StudentPackage) -> Verdict:
+def check_two_sensors(package: StudentPackage, verdict: Verdict) -> Verdict:
     """/front and /rear sensors both publish /ranges, which /data_processor reads."""
-    verdict = Verdict('Exercise 6.5.1 (two namespaced sensors, one processor)')
     if not requirements.files_installed(verdict, package, ('launch/' + TWO_SENSORS_FILE,)):
         return verdict
     run = probe(package, TWO_SENSORS_FILE, (*SENSORS.values(), PROCESSOR))
@@ -155,9 +154,8 @@ def _settings(verdict: Verdict, run: LaunchProbe) -> None:
                      f'set max_linear_speed: {ROBOT_SPEED} in its section')
 
 
-def check_two_robots(package: StudentPackage) -> Verdict:
+def check_two_robots(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Two robots in /robot1 and /robot2, kept apart, configured by one parameter file."""
-    verdict = Verdict('Exercise 6.5.2 (two robots, one parameter file)')
     if not requirements.files_installed(verdict, package, ('launch/' + TWO_ROBOTS_FILE,
                                                            'config/' + ROBOTS_CONFIG)):
         return verdict

@@ -159,9 +159,8 @@ def _shutdown_after_death(verdict: Verdict, trial: SensorTrial) -> None:
                    f'processor still ran): {FIX_SHUTDOWN}')
 
 
-def check_critical_sensor(package: StudentPackage) -> Verdict:
+def check_critical_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """data_processor starts after the sensor's ready line; the sensor's death ends the launch."""
-    verdict = Verdict('Exercise 6.6.1 (start when ready, stop when the sensor dies)')
     if not requirements.files_installed(verdict, package, ('launch/' + CRITICAL_FILE,)):
         return verdict
     trial = run_trial(package)

@@ -41,9 +41,8 @@ def _in_graph_or_elsewhere(verdict: Verdict, run: LaunchProbe, node: str) -> Non
                                   f"executable='{node.lstrip('/')}')")
 
 
-def check_fix_pipeline(package: StudentPackage) -> Verdict:
+def check_fix_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Both nodes in the launch's domain, /distance linking them, readings filtered."""
-    verdict = Verdict('Exercise 6.7.1 (make the data flow)')
     if not requirements.files_installed(verdict, package, ('launch/' + PIPELINE_FILE,)):
         return verdict
     run = probe(package, PIPELINE_FILE, NODES, timeout=PROBE_TIMEOUT,

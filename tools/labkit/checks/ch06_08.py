@@ -98,9 +98,8 @@ def _catches(verdict: Verdict, package: StudentPackage, launch_file: str, defect
         f'your spec passes {launch_file}, where {defect}; {need}')
 
 
-def check_front_spec(package: StudentPackage) -> Verdict:
+def check_front_spec(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The student's spec passes the right system and fails both planted defects."""
-    verdict = Verdict('Exercise 6.8.1 (a spec that catches a planted defect)')
     spec = package.source / SPEC
     if not spec.is_file():
         return verdict.fail(f'{package.shown(spec)} does not exist: run '

@@ -25,8 +25,12 @@ class Exercise:
     id: str
     title: str
     files: tuple[str, ...]
-    check: Callable[[StudentPackage], Verdict]
+    check: Callable[[StudentPackage, Verdict], Verdict]
     solutions: str = 'ch06_solutions'
+
+    def grade(self, package: StudentPackage) -> Verdict:
+        """Run the check on `package`; its verdict carries the exercise's title."""
+        return self.check(package, Verdict(self.title))
 
     def starter(self, relative: str) -> Path:
         return STARTERS / relative
