@@ -122,6 +122,17 @@ def test_conditions_follow_the_given_arguments(installed, write_spec):
     assert 'because its condition is false' in evidence(manual, 'node /robot_controller')
 
 
+def test_wiring_of_a_node_started_without_a_name(installed, write_spec):
+    # the spec node is paired with the unnamed Node action, and its topics judged on it
+    report = check_static(load_spec(write_spec(SYSTEM)),
+                          installed('conditional_sensors.launch.py'))
+    assert statuses(report, 'node /sensor_publisher') == [NOT_CHECKED]
+    assert exactly(report, 'topic /distance: publisher /sensor_publisher') == [NOT_CHECKED]
+    assert exactly(report, 'topic /distance: subscriber /data_processor') == [NOT_CHECKED]
+    assert 'resolves to /distance' in evidence(report, 'topic /distance: subscriber')
+    assert 'starts no node of that name' not in evidence(report, 'topic /distance')
+
+
 def test_parameter_types_values_and_ranges(installed, write_spec):
     spec = load_spec(write_spec("""\
 nodes:

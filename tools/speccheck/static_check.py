@@ -42,7 +42,7 @@ def _findings(spec: Spec, system: StaticSystem) -> list[Finding]:
         if node_spec.name in matched:
             findings += _parameters(node_spec, matched[node_spec.name])
     for topic in spec.topics:
-        findings += _wiring(topic, system)
+        findings += _wiring(topic, system, matched)
     findings += [Finding(f'node {node.label}', NOT_CHECKED, note)
                  for node in system.nodes for note in node.notes]
     findings += [Finding('launch file', NOT_CHECKED, item) for item in system.not_checked]
@@ -225,12 +225,16 @@ def resolve(name: str, node: PlannedNode) -> str:
     return node.namespace.rstrip('/') + '/' + name
 
 
-def _wiring(topic: TopicSpec, system: StaticSystem) -> list[Finding]:
+def _wiring(topic: TopicSpec, system: StaticSystem,
+            matched: dict[str, PlannedNode]) -> list[Finding]:
+    """Each expected endpoint, judged on the Node action that starts it: the one
+    `_match_nodes` paired with the spec node (also an unnamed one), else by name."""
     findings = []
     for role, names in (('publisher', topic.publishers), ('subscriber', topic.subscribers)):
         for name in names:
             requirement = f'topic {topic.name}: {role} {name}'
-            nodes = [node for node in system.nodes if node.full_name == name]
+            nodes = [matched[name]] if name in matched else [
+                node for node in system.nodes if node.full_name == name]
             if not nodes:
                 findings.append(Finding(requirement, FAILED,
                                         f'expected {role} {name}, but the launch file starts '
