@@ -3,9 +3,13 @@ from __future__ import annotations
 
 import labkit
 import pytest
+from labkit import observer
 from labkit.drawing import layers, layout, to_networkx
 from labkit.graph import GraphSnapshot, Topic
 from matplotlib.figure import Figure
+from std_msgs.msg import Float32
+
+from tests._polling import wait_for
 
 SYSTEM_NODES = ['/sensor_publisher', '/data_processor']
 
@@ -161,3 +165,19 @@ def test_left_over_nodes_of_exited_processes_are_left_out(monkeypatch):
     assert snapshot.nodes == ('/listener', '/server', '/talker')
     assert snapshot.topics == {'/chatter': Topic('/chatter', ('std_msgs/msg/String',),
                                                  ('/talker',), ('/listener',))}
+
+
+def test_settle_notices_a_second_publisher_on_a_known_topic(ros_env):
+    # settle() waits until the graph stops changing; a new publisher on a
+    # topic that already exists changes no name or type, only the counts
+    watcher = observer.observer()
+    first = watcher.node.create_publisher(Float32, '/settle_probe', 1)
+    wait_for(lambda: watcher.node.count_publishers('/settle_probe') == 1, 10, 'first publisher')
+    before = observer._fingerprint(watcher.node)
+    second = watcher.node.create_publisher(Float32, '/settle_probe', 1)
+    try:
+        wait_for(lambda: observer._fingerprint(watcher.node) != before, 10,
+                 'the fingerprint to change with the second publisher')
+    finally:
+        watcher.node.destroy_publisher(second)
+        watcher.node.destroy_publisher(first)

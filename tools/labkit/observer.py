@@ -155,8 +155,11 @@ def node_names(include_hidden: bool = False) -> list[str]:
 
 
 def _fingerprint(node: Node) -> tuple:
-    return (sorted(node.get_node_names_and_namespaces()),
-            sorted((name, tuple(types)) for name, types in node.get_topic_names_and_types()),
+    """What the graph looks like now; endpoint counts too, because a second
+    publisher on a topic that already exists changes no name or type."""
+    topics = sorted((name, tuple(types)) for name, types in node.get_topic_names_and_types())
+    return (sorted(node.get_node_names_and_namespaces()), topics,
+            [(node.count_publishers(name), node.count_subscribers(name)) for name, _ in topics],
             sorted((name, tuple(types)) for name, types in node.get_service_names_and_types()))
 
 
