@@ -1,8 +1,15 @@
-"""How often messages arrive on topics, measured over a bounded window.
+"""How often messages arrive on topics, and how large they are, measured over
+a bounded window.
 
 Like `ros2 topic hz`, but for several topics at once and returning numbers:
-one subscription per topic on labkit's hidden observer node, best effort and
-volatile so that it matches any publisher, kept for `window` seconds.
+one subscription per topic on labkit's hidden observer node, kept for
+`window` seconds.  Like `ros2 topic hz`, it is reliable when every publisher
+of the topic is (a large message sent best effort loses fragments, and a
+whole frame with each; measured on 2.7 MB images: 3-10 of 30 per second
+arrived best effort, 24 reliable), otherwise best effort; always volatile,
+so that it matches any publisher.  The
+subscriptions take messages serialized (never converted to Python), so the
+size of each is known for free: the bytes that cross the middleware.
 """
 from __future__ import annotations
 
@@ -13,7 +20,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from rclpy.executors import SingleThreadedExecutor
-from rclpy.qos import qos_profile_sensor_data
+from rclpy.node import Node
+from rclpy.qos import QoSProfile, ReliabilityPolicy, qos_profile_sensor_data
 
 from labkit import observer
 from labkit.errors import LabkitError
@@ -27,6 +35,12 @@ class Rate:
     count: int
     window: float
     hz: float | None  # None with fewer than two messages
+    size: float | None = None  # mean serialized bytes per message; None without messages
+
+    @property
+    def bytes_per_second(self) -> float | None:
+        """What the topic costs the middleware: rate times message size."""
+        return None if self.hz is None or self.size is None else self.hz * self.size
 
     def __str__(self) -> str:
         if self.hz is None:
@@ -44,15 +58,17 @@ def message_class(type_name: str) -> Any:
 
 
 def measure_rates(topics: Mapping[str, str], window: float = 3.0) -> dict[str, Rate]:
-    """Rate of each topic (name -> message type name), all measured in one window."""
+    """Rate and mean message size of each topic (name -> message type name),
+    all measured in one window."""
     obs = observer.observer()
-    arrivals: dict[str, list[float]] = {topic: [] for topic in topics}
+    arrivals: dict[str, list[tuple[float, int]]] = {topic: [] for topic in topics}
     subscriptions = []
     for topic, type_name in topics.items():
-        stamps = arrivals[topic]
+        seen = arrivals[topic]
         subscriptions.append(obs.node.create_subscription(
-            message_class(type_name), topic, lambda _msg, stamps=stamps:
-            stamps.append(time.monotonic()), qos_profile_sensor_data, raw=True))
+            message_class(type_name), topic, lambda raw, seen=seen:
+            seen.append((time.monotonic(), len(raw))), matching_qos(obs.node, topic),
+            raw=True))
     executor = SingleThreadedExecutor(context=obs.context)
     executor.add_node(obs.node)
     try:
@@ -64,10 +80,20 @@ def measure_rates(topics: Mapping[str, str], window: float = 3.0) -> dict[str, R
         executor.shutdown()
         for subscription in subscriptions:
             obs.node.destroy_subscription(subscription)
-    return {topic: _rate(topic, stamps, window) for topic, stamps in arrivals.items()}
+    return {topic: _rate(topic, seen, window) for topic, seen in arrivals.items()}
 
 
-def _rate(topic: str, stamps: list[float], window: float) -> Rate:
-    if len(stamps) < 2:
-        return Rate(topic, len(stamps), window, None)
-    return Rate(topic, len(stamps), window, (len(stamps) - 1) / (stamps[-1] - stamps[0]))
+def matching_qos(node: Node, topic: str) -> QoSProfile:
+    """Reliable if every publisher seen offers it, else best effort (volatile both)."""
+    offered = [info.qos_profile.reliability for info in node.get_publishers_info_by_topic(topic)]
+    if offered and all(reliability == ReliabilityPolicy.RELIABLE for reliability in offered):
+        return QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE)
+    return qos_profile_sensor_data
+
+
+def _rate(topic: str, seen: list[tuple[float, int]], window: float) -> Rate:
+    size = sum(length for _, length in seen) / len(seen) if seen else None
+    if len(seen) < 2:
+        return Rate(topic, len(seen), window, None, size)
+    hz = (len(seen) - 1) / (seen[-1][0] - seen[0][0])
+    return Rate(topic, len(seen), window, hz, size)
