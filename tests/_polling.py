@@ -7,7 +7,7 @@ from typing import TypeVar
 
 import pytest
 
-T = TypeVar("T")
+T = TypeVar('T')
 
 
 def wait_for(predicate: Callable[[], T], timeout: float, what: str) -> T:
@@ -18,4 +18,4 @@ def wait_for(predicate: Callable[[], T], timeout: float, what: str) -> T:
         if value:
             return value
         time.sleep(0.2)
-    pytest.fail(f"gave up after {timeout} s waiting for {what}")
+    pytest.fail(f'gave up after {timeout} s waiting for {what}')

@@ -10,22 +10,22 @@ import sys
 import pytest
 from textbook import paths
 
-SUITE = paths.ROOT.parent / "shared" / "conformance" / "testing"
-CASES = sorted(p.name for p in SUITE.glob("test_*.py")) if SUITE.is_dir() else []
+SUITE = paths.ROOT.parent / 'shared' / 'conformance' / 'testing'
+CASES = sorted(p.name for p in SUITE.glob('test_*.py')) if SUITE.is_dir() else []
 
 pytestmark = [
-    pytest.mark.skipif(not SUITE.is_dir(), reason=f"no testing conformance suite at {SUITE}"),
+    pytest.mark.skipif(not SUITE.is_dir(), reason=f'no testing conformance suite at {SUITE}'),
     pytest.mark.timeout(1800),
 ]
 
 
 def test_testing_conformance(tmp_path):
     result = subprocess.run(
-        [sys.executable, str(SUITE / "check_testing.py"), "--python", sys.executable,
-         "--workdir", str(tmp_path), "-v"],
+        [sys.executable, str(SUITE / 'check_testing.py'), '--python', sys.executable,
+         '--workdir', str(tmp_path), '-v'],
         cwd=tmp_path, env=dict(os.environ), capture_output=True, text=True, timeout=1700)
     out = result.stdout + result.stderr
-    assert f"{len(CASES)} passed, 0 failed" in out, out
+    assert f'{len(CASES)} passed, 0 failed' in out, out
     assert result.returncode == 0, out
 
 

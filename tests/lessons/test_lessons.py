@@ -5,7 +5,6 @@ the site build takes it; ``TEXTBOOK_FRESH=1`` executes every lesson anyway."""
 from __future__ import annotations
 
 import pytest
-
 from textbook import execute, settings
 from textbook.lessons import discover, load
 
@@ -13,16 +12,16 @@ LESSONS = discover()
 
 
 def test_there_are_lessons():
-    assert LESSONS, "lessons/ has no lessons"
+    assert LESSONS, 'lessons/ has no lessons'
 
 
 @pytest.mark.timeout(900)
-@pytest.mark.xdist_group("lessons")  # before tests/site, in the same worker
-@pytest.mark.parametrize("path", LESSONS, ids=lambda p: str(p.relative_to(p.parents[2])))
+@pytest.mark.xdist_group('lessons')  # before tests/site, in the same worker
+@pytest.mark.parametrize('path', LESSONS, ids=lambda p: str(p.relative_to(p.parents[2])))
 def test_lesson_executes(path):
     lesson = load(path)
     notebook = execute.refresh(lesson) if settings.load().fresh else execute.executed(lesson)
-    code_cells = [cell for cell in notebook.cells if cell.cell_type == "code"]
-    assert all(cell.get("execution_count") for cell in code_cells), "a code cell did not run"
-    errors = [out for cell in code_cells for out in cell.outputs if out.output_type == "error"]
+    code_cells = [cell for cell in notebook.cells if cell.cell_type == 'code']
+    assert all(cell.get('execution_count') for cell in code_cells), 'a code cell did not run'
+    errors = [out for cell in code_cells for out in cell.outputs if out.output_type == 'error']
     assert not errors, errors

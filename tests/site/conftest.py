@@ -14,16 +14,16 @@ import pytest
 from textbook import paths
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope='session')
 def site(tmp_path_factory):
-    if os.environ.get("TEXTBOOK_SITE_DIR"):
-        return Path(os.environ["TEXTBOOK_SITE_DIR"])
-    site_dir = tmp_path_factory.mktemp("site")
+    if os.environ.get('TEXTBOOK_SITE_DIR'):
+        return Path(os.environ['TEXTBOOK_SITE_DIR'])
+    site_dir = tmp_path_factory.mktemp('site')
     result = subprocess.run(
-        [sys.executable, "-m", "mkdocs", "build", "--strict", "-f", str(paths.MKDOCS_YML),
-         "-d", str(site_dir)],
-        cwd=paths.ROOT, env=dict(os.environ, NO_MKDOCS_2_WARNING="1"),
+        [sys.executable, '-m', 'mkdocs', 'build', '--strict', '-f', str(paths.MKDOCS_YML),
+         '-d', str(site_dir)],
+        cwd=paths.ROOT, env=dict(os.environ, NO_MKDOCS_2_WARNING='1'),
         capture_output=True, text=True, timeout=1800)
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "WARNING" not in result.stderr, result.stderr
+    assert 'WARNING' not in result.stderr, result.stderr
     return site_dir

@@ -27,15 +27,15 @@ from selenium.webdriver.support.ui import WebDriverWait
 from textbook.lessons import load_all
 from textbook.render import NO_DESCRIPTION
 
-pytestmark = [pytest.mark.xdist_group("lessons"), pytest.mark.timeout(1800)]
+pytestmark = [pytest.mark.xdist_group('lessons'), pytest.mark.timeout(1800)]
 
-CHROMIUM = Path("/usr/bin/chromium")
-CHROMEDRIVER = Path("/usr/bin/chromedriver")
-FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-         "--disable-background-networking", "--disable-component-update", "--disable-sync",
-         "--window-size=1600,1200"]
+CHROMIUM = Path('/usr/bin/chromium')
+CHROMEDRIVER = Path('/usr/bin/chromedriver')
+FLAGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+         '--disable-background-networking', '--disable-component-update', '--disable-sync',
+         '--window-size=1600,1200']
 WAIT = 30  # seconds, at most, for any state of a page
-LESSON_PAGES = [lesson.site_path.removesuffix(".ipynb") + "/" for lesson in load_all()]
+LESSON_PAGES = [lesson.site_path.removesuffix('.ipynb') + '/' for lesson in load_all()]
 
 
 class _QuietHandler(SimpleHTTPRequestHandler):
@@ -43,20 +43,20 @@ class _QuietHandler(SimpleHTTPRequestHandler):
         pass
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope='module')
 def server(site):
     """The site at http://127.0.0.1:<free port>/."""
-    httpd = ThreadingHTTPServer(("127.0.0.1", 0),
+    httpd = ThreadingHTTPServer(('127.0.0.1', 0),
                                 functools.partial(_QuietHandler, directory=str(site)))
     thread = threading.Thread(target=httpd.serve_forever, daemon=True)
     thread.start()
-    yield f"http://127.0.0.1:{httpd.server_address[1]}/"
+    yield f'http://127.0.0.1:{httpd.server_address[1]}/'
     httpd.shutdown()
     httpd.server_close()
     thread.join(timeout=WAIT)
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture(scope='module')
 def browser(tmp_path_factory):
     missing = [str(p) for p in (CHROMIUM, CHROMEDRIVER) if not p.exists()]
     if missing:
@@ -65,10 +65,10 @@ def browser(tmp_path_factory):
                     f"`bash tools/setup_env.sh` does it)", pytrace=False)
     options = webdriver.ChromeOptions()
     options.binary_location = str(CHROMIUM)
-    profile = tmp_path_factory.mktemp("chromium-profile")
-    for flag in (*FLAGS, f"--user-data-dir={profile}"):
+    profile = tmp_path_factory.mktemp('chromium-profile')
+    for flag in (*FLAGS, f'--user-data-dir={profile}'):
         options.add_argument(flag)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
+    options.set_capability('goog:loggingPrefs', {'browser': 'ALL'})
     driver = webdriver.Chrome(service=Service(executable_path=str(CHROMEDRIVER)),
                               options=options)
     driver.set_page_load_timeout(WAIT)
@@ -80,74 +80,74 @@ def browser(tmp_path_factory):
 def open_page(browser, url: str) -> list[str]:
     """Load ``url`` and return its console errors (failed requests to other hosts
     excepted: the test machine may be offline)."""
-    browser.get_log("browser")  # drop what earlier pages logged
+    browser.get_log('browser')  # drop what earlier pages logged
     browser.get(url)
     WebDriverWait(browser, WAIT).until(
-        lambda b: b.execute_script("return document.readyState") == "complete")
+        lambda b: b.execute_script('return document.readyState') == 'complete')
     errors = []
-    for entry in browser.get_log("browser"):
-        if entry["level"] != "SEVERE":
+    for entry in browser.get_log('browser'):
+        if entry['level'] != 'SEVERE':
             continue
-        source = entry["message"].split(" ", 1)[0]
-        if "Failed to load resource" in entry["message"] and \
-                urlparse(source).hostname not in (None, "127.0.0.1"):
+        source = entry['message'].split(' ', 1)[0]
+        if 'Failed to load resource' in entry['message'] and \
+                urlparse(source).hostname not in (None, '127.0.0.1'):
             continue
-        errors.append(entry["message"])
+        errors.append(entry['message'])
     return errors
 
 
-@pytest.mark.parametrize("page", LESSON_PAGES)
+@pytest.mark.parametrize('page', LESSON_PAGES)
 def test_lesson_page_in_the_browser(browser, server, page):
     errors = open_page(browser, server + page)
-    assert errors == [], f"{page}: console errors:\n" + "\n".join(errors)
+    assert errors == [], f'{page}: console errors:\n' + '\n'.join(errors)
 
-    headings = browser.find_elements(By.CSS_SELECTOR, "article h2[id], article h3[id]")
-    toc = {link.get_attribute("href").split("#", 1)[1]: link.get_attribute("textContent")
+    headings = browser.find_elements(By.CSS_SELECTOR, 'article h2[id], article h3[id]')
+    toc = {link.get_attribute('href').split('#', 1)[1]: link.get_attribute('textContent')
            for link in browser.find_elements(By.CSS_SELECTOR,
-                                             "nav.md-nav--secondary a.md-nav__link")}
-    with_code = [h for h in headings if h.find_elements(By.TAG_NAME, "code")]
+                                             'nav.md-nav--secondary a.md-nav__link')}
+    with_code = [h for h in headings if h.find_elements(By.TAG_NAME, 'code')]
     for heading in with_code:
-        code = " ".join(c.get_attribute("textContent")
-                        for c in heading.find_elements(By.TAG_NAME, "code"))
-        entry = toc.get(heading.get_attribute("id"))
+        code = ' '.join(c.get_attribute('textContent')
+                        for c in heading.find_elements(By.TAG_NAME, 'code'))
+        entry = toc.get(heading.get_attribute('id'))
         assert entry is not None, f"{page}: heading #{heading.get_attribute('id')} not in the TOC"
-        assert code.split()[0] in entry, f"{page}: TOC entry {entry.strip()!r} lost {code!r}"
+        assert code.split()[0] in entry, f'{page}: TOC entry {entry.strip()!r} lost {code!r}'
 
-    for image in browser.find_elements(By.CSS_SELECTOR, "article img"):
-        alt = (image.get_attribute("alt") or "").strip()
-        assert alt and alt != NO_DESCRIPTION, f"{page}: an image has no description"
-        assert browser.execute_script("return arguments[0].naturalWidth", image) > 0
+    for image in browser.find_elements(By.CSS_SELECTOR, 'article img'):
+        alt = (image.get_attribute('alt') or '').strip()
+        assert alt and alt != NO_DESCRIPTION, f'{page}: an image has no description'
+        assert browser.execute_script('return arguments[0].naturalWidth', image) > 0
 
-    for fold in browser.find_elements(By.CSS_SELECTOR, "details.textbook-solution"):
-        assert fold.get_attribute("open") is None, f"{page}: a solution is unfolded"
-        inside = fold.find_elements(By.CSS_SELECTOR, ":scope > .jp-Cell")
+    for fold in browser.find_elements(By.CSS_SELECTOR, 'details.textbook-solution'):
+        assert fold.get_attribute('open') is None, f'{page}: a solution is unfolded'
+        inside = fold.find_elements(By.CSS_SELECTOR, ':scope > .jp-Cell')
         assert inside and not any(cell.is_displayed() for cell in inside)
 
-    assert browser.find_elements(By.CSS_SELECTOR, ".textbook-header a, .textbook-header")
-    assert browser.find_elements(By.CSS_SELECTOR, ".textbook-key-points h2#key-points")
+    assert browser.find_elements(By.CSS_SELECTOR, '.textbook-header a, .textbook-header')
+    assert browser.find_elements(By.CSS_SELECTOR, '.textbook-key-points h2#key-points')
     edit = browser.find_element(By.CSS_SELECTOR, "a.md-content__button[title='Edit this page']")
-    assert edit.get_attribute("href").endswith(
-        f"/lessons/{page.rstrip('/')}.md"), edit.get_attribute("href")
+    assert edit.get_attribute('href').endswith(
+        f"/lessons/{page.rstrip('/')}.md"), edit.get_attribute('href')
 
     download = browser.find_element(By.CSS_SELECTOR,
                                     "a[title='Download the executed notebook']")
-    with urllib.request.urlopen(urljoin(browser.current_url, download.get_attribute("href")),
+    with urllib.request.urlopen(urljoin(browser.current_url, download.get_attribute('href')),
                                 timeout=WAIT) as response:
         notebook = json.load(response)
-    assert notebook["nbformat"] == 4 and any(
-        cell.get("outputs") for cell in notebook["cells"] if cell["cell_type"] == "code")
+    assert notebook['nbformat'] == 4 and any(
+        cell.get('outputs') for cell in notebook['cells'] if cell['cell_type'] == 'code')
 
 
 def test_graphs_share_one_scale(browser, server):
     """6.3 shows two graphs of different widths: both at the same pixels per inch."""
-    page = next(p for p in LESSON_PAGES if "/03_" in p)
+    page = next(p for p in LESSON_PAGES if '/03_' in p)
     open_page(browser, server + page)
-    images = browser.find_elements(By.CSS_SELECTOR, "figure.ros-graph img")
+    images = browser.find_elements(By.CSS_SELECTOR, 'figure.ros-graph img')
     assert len(images) >= 2
     scales = [browser.execute_script(
-        "return arguments[0].clientWidth / arguments[0].naturalWidth", image) for image in images]
+        'return arguments[0].clientWidth / arguments[0].naturalWidth', image) for image in images]
     assert max(scales) - min(scales) < 0.01, scales
-    captions = browser.find_elements(By.CSS_SELECTOR, "figure.ros-graph figcaption")
+    captions = browser.find_elements(By.CSS_SELECTOR, 'figure.ros-graph figcaption')
     assert len(captions) == len(images) and all(c.text.strip() for c in captions)
 
 
@@ -159,21 +159,21 @@ def test_palette_toggles_between_light_and_dark(browser, server):
         By.CSS_SELECTOR, "form[data-md-component='palette'] label") if label.is_displayed())
     toggle.click()
     WebDriverWait(browser, WAIT).until(lambda b: b.execute_script(scheme) != before)
-    assert {before, browser.execute_script(scheme)} == {"default", "slate"}
+    assert {before, browser.execute_script(scheme)} == {'default', 'slate'}
 
 
 def test_search_finds_launch_configuration(browser, server):
     open_page(browser, server)
-    field = browser.find_element(By.CSS_SELECTOR, "input.md-search__input")
+    field = browser.find_element(By.CSS_SELECTOR, 'input.md-search__input')
     if not field.is_displayed():  # narrow window: the search opens from a header button
         browser.find_element(By.CSS_SELECTOR, "label.md-header__button[for='__search']").click()
         WebDriverWait(browser, WAIT).until(lambda b: field.is_displayed())
     field.click()
-    field.send_keys("LaunchConfiguration")
+    field.send_keys('LaunchConfiguration')
     try:
         WebDriverWait(browser, WAIT).until(lambda b: b.find_elements(
-            By.CSS_SELECTOR, "li.md-search-result__item"))
+            By.CSS_SELECTOR, 'li.md-search-result__item'))
     except TimeoutException:
-        pytest.fail("the site search found nothing for LaunchConfiguration")
-    results = browser.find_element(By.CSS_SELECTOR, ".md-search-result").text
-    assert "LaunchConfiguration" in results
+        pytest.fail('the site search found nothing for LaunchConfiguration')
+    results = browser.find_element(By.CSS_SELECTOR, '.md-search-result').text
+    assert 'LaunchConfiguration' in results

@@ -8,39 +8,39 @@ import pytest
 from bs4 import BeautifulSoup
 
 # After tests/lessons in the same worker: the build then reuses their results.
-pytestmark = pytest.mark.xdist_group("lessons")
+pytestmark = pytest.mark.xdist_group('lessons')
 
 
 def page_text(site, page: str) -> str:
-    return html.unescape(BeautifulSoup((site / page).read_text(), "html.parser").get_text())
+    return html.unescape(BeautifulSoup((site / page).read_text(), 'html.parser').get_text())
 
 
 @pytest.mark.timeout(1800)
 def test_pilot_page_shows_its_executed_output(site):
-    text = page_text(site, "ch06/L1/00_setup_check/index.html")
-    assert "[sensor_publisher]: Reading #" in text
-    assert "[data_processor]: Received " in text
-    assert "sensor_publisher exited with code 0" in text
-    assert "Summary: 1 package finished" in text or "Summary: " in text
+    text = page_text(site, 'ch06/L1/00_setup_check/index.html')
+    assert '[sensor_publisher]: Reading #' in text
+    assert '[data_processor]: Received ' in text
+    assert 'sensor_publisher exited with code 0' in text
+    assert 'Summary: 1 package finished' in text or 'Summary: ' in text
 
 
 @pytest.mark.timeout(1800)
 def test_pilot_page_has_titled_snippets_and_a_download(site):
-    page = BeautifulSoup((site / "ch06/L1/00_setup_check/index.html").read_text(),
-                         "html.parser")
-    titles = [span.text for span in page.select("div.highlight > span.filename")]
-    assert "snippets/my_robot_pkg/setup.py" in titles
+    page = BeautifulSoup((site / 'ch06/L1/00_setup_check/index.html').read_text(),
+                         'html.parser')
+    titles = [span.text for span in page.select('div.highlight > span.filename')]
+    assert 'snippets/my_robot_pkg/setup.py' in titles
     assert page.select_one('a[title="Download the executed notebook"]') is not None
-    notebook = nbformat.read(site / "ch06/L1/00_setup_check/00_setup_check.ipynb", as_version=4)
-    outputs = "".join(out.get("text", "") for cell in notebook.cells
-                      for out in cell.get("outputs", []))
-    assert "[data_processor]: Received " in outputs
+    notebook = nbformat.read(site / 'ch06/L1/00_setup_check/00_setup_check.ipynb', as_version=4)
+    outputs = ''.join(out.get('text', '') for cell in notebook.cells
+                      for out in cell.get('outputs', []))
+    assert '[data_processor]: Received ' in outputs
 
 
 @pytest.mark.timeout(1800)
 def test_navigation_is_chapter_layer_lesson(site):
-    text = page_text(site, "index.html")
-    for label in ("Chapter 6 · Building Robot Systems", "L1 · Manual Foundation",
-                  "Set up and check your environment", "Glossary",
-                  "Spec files: the system you meant to build"):
+    text = page_text(site, 'index.html')
+    for label in ('Chapter 6 · Building Robot Systems', 'L1 · Manual Foundation',
+                  'Set up and check your environment', 'Glossary',
+                  'Spec files: the system you meant to build'):
         assert label in text

@@ -10,8 +10,8 @@ def launch_files_included_by(lesson: Path) -> set[tuple[str, str]]:
     """(package, launch file name) of every launch-file snippet the lesson includes."""
     found = set()
     for fence in fences(lesson.read_text()):
-        target = fence.argument.partition("#")[0]
-        if fence.directive == "snippet" and target.endswith(".launch.py"):
-            package, _, name = target.partition("/launch/")
+        target = fence.argument.partition('#')[0]
+        if fence.directive == 'snippet' and target.endswith('.launch.py'):
+            package, _, name = target.partition('/launch/')
             found.add((package, name))
     return found

@@ -22,12 +22,12 @@ LIMIT = 30.0  # seconds; a hang guard, not a speed requirement
 
 def load_turtlesim_interfaces(install: Path) -> None:
     """Make ``import turtlesim`` / ``turtlesim_headless`` work in this process."""
-    prefix = install / "turtlesim"
-    lib = prefix / "lib"
+    prefix = install / 'turtlesim'
+    lib = prefix / 'lib'
     # rosidl finds the typesupport libraries on LD_LIBRARY_PATH when a type is used.
-    os.environ["LD_LIBRARY_PATH"] = os.pathsep.join(
-        filter(None, [str(lib), os.environ.get("LD_LIBRARY_PATH")]))
-    pending = sorted(lib.glob("lib*.so"))
+    os.environ['LD_LIBRARY_PATH'] = os.pathsep.join(
+        filter(None, [str(lib), os.environ.get('LD_LIBRARY_PATH')]))
+    pending = sorted(lib.glob('lib*.so'))
     for _ in range(len(pending)):  # in dependency order, whatever it is
         for library in list(pending):
             try:
@@ -36,8 +36,8 @@ def load_turtlesim_interfaces(install: Path) -> None:
             except OSError:
                 continue
     if pending:
-        raise ImportError(f"cannot load {[p.name for p in pending]} from {lib}")
-    site = next(prefix.glob("lib/python3*/site-packages"))
+        raise ImportError(f'cannot load {[p.name for p in pending]} from {lib}')
+    site = next(prefix.glob('lib/python3*/site-packages'))
     if str(site) not in sys.path:
         sys.path.insert(0, str(site))
 
@@ -48,7 +48,7 @@ class SimClient:
     def __init__(self) -> None:
         self.context = Context()
         rclpy.init(context=self.context)
-        self.node = rclpy.create_node("turtlesim_test_client", context=self.context)
+        self.node = rclpy.create_node('turtlesim_test_client', context=self.context)
         self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         self.latest: dict[str, object] = {}
@@ -67,15 +67,15 @@ class SimClient:
             if value:
                 return value
             self.executor.spin_once(timeout_sec=0.05)
-        raise AssertionError(f"timed out waiting for {what}")
+        raise AssertionError(f'timed out waiting for {what}')
 
     def call(self, srv_type, service: str, /, **fields):
         """Call ``service`` with a request of ``fields`` and return its response."""
         client = self.node.create_client(srv_type, service)
         try:
-            self.spin_until(client.service_is_ready, f"service {service}")
+            self.spin_until(client.service_is_ready, f'service {service}')
             future = client.call_async(srv_type.Request(**fields))
-            self.spin_until(future.done, f"the response of {service}")
+            self.spin_until(future.done, f'the response of {service}')
             return future.result()
         finally:
             self.node.destroy_client(client)
@@ -90,16 +90,16 @@ class SimClient:
         def match():
             msg = self.latest.get(topic)
             return msg if msg is not None and predicate(msg) else None
-        return self.spin_until(match, f"{what} on {topic}")
+        return self.spin_until(match, f'{what} on {topic}')
 
     def drive(self, turtle: str, linear: float = 0.0, angular: float = 0.0,
               lateral: float = 0.0) -> None:
         """Publish one velocity command once turtlesim listens on ``<turtle>/cmd_vel``."""
-        topic = f"/{turtle}/cmd_vel"
+        topic = f'/{turtle}/cmd_vel'
         if topic not in self._publishers:
             self._publishers[topic] = self.node.create_publisher(Twist, topic, 10)
         publisher = self._publishers[topic]
-        self.spin_until(lambda: publisher.get_subscription_count() > 0, f"a subscriber of {topic}")
+        self.spin_until(lambda: publisher.get_subscription_count() > 0, f'a subscriber of {topic}')
         command = Twist()
         command.linear.x, command.linear.y, command.angular.z = linear, lateral, angular
         publisher.publish(command)

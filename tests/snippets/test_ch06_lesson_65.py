@@ -25,10 +25,10 @@ from textbook import paths
 
 from ._shown_snippets import launch_files_included_by
 
-LESSON = paths.LESSONS / "ch06/L1/05_namespaces_and_remapping.md"
+LESSON = paths.LESSONS / 'ch06/L1/05_namespaces_and_remapping.md'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-STARTED = re.compile(r"^\[INFO\] \[([\w.]+)-\d+\]: process started with pid")
-ENDED = re.compile(r"^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly")
+STARTED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process started with pid')
+ENDED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly')
 
 Wiring = dict[str, tuple[tuple[str, ...], tuple[str, ...]]]  # topic -> (publishers, subscribers)
 
@@ -51,75 +51,75 @@ class Case:
 
 def _robot(ns: str) -> Wiring:
     """The wiring of one robot (sensor -> processor -> controller) in namespace `ns`."""
-    return {f"/{ns}/cmd_vel": ((f"/{ns}/robot_controller",), ()),
-            f"/{ns}/distance": ((f"/{ns}/sensor_publisher",), (f"/{ns}/data_processor",)),
-            f"/{ns}/distance_filtered": ((f"/{ns}/data_processor",),
-                                         (f"/{ns}/robot_controller",))}
+    return {f'/{ns}/cmd_vel': ((f'/{ns}/robot_controller',), ()),
+            f'/{ns}/distance': ((f'/{ns}/sensor_publisher',), (f'/{ns}/data_processor',)),
+            f'/{ns}/distance_filtered': ((f'/{ns}/data_processor',),
+                                         (f'/{ns}/robot_controller',))}
 
 
 def _robot_nodes(ns: str, controller: dict[str, Any]) -> dict[str, dict[str, Any]]:
-    return {f"/{ns}/sensor_publisher": {"publish_rate": 2.0},
-            f"/{ns}/data_processor": {"window_size": 3},
-            f"/{ns}/robot_controller": controller}
+    return {f'/{ns}/sensor_publisher': {'publish_rate': 2.0},
+            f'/{ns}/data_processor': {'window_size': 3},
+            f'/{ns}/robot_controller': controller}
 
 
-PIPELINE = ("data_processor", "robot_controller", "sensor_publisher")
-DEFAULT_SPEED = {"robot_name": "my_robot", "max_linear_speed": 0.5}
+PIPELINE = ('data_processor', 'robot_controller', 'sensor_publisher')
+DEFAULT_SPEED = {'robot_name': 'my_robot', 'max_linear_speed': 0.5}
 
 CASES = [
-    Case("my_robot_pkg", "ns_robot1.launch.py", ("data_processor", "sensor_publisher"),
-         topics={"/robot1/distance": (("/robot1/sensor_publisher",), ("/robot1/data_processor",)),
-                 "/robot1/distance_filtered": (("/robot1/data_processor",), ())},
-         nodes={"/robot1/sensor_publisher": {"publish_rate": 2.0},
-                "/robot1/data_processor": {"window_size": 3}}),
-    Case("my_robot_pkg", "ns_two_robots.launch.py", PIPELINE * 2,
-         topics={**_robot("robot1"), **_robot("robot2")},
-         nodes={**_robot_nodes("robot1", {"robot_name": "alpha"}),
-                **_robot_nodes("robot2", {"robot_name": "bravo"})}),
-    Case("my_robot_pkg", "remap_two_sensors.launch.py",
-         ("data_processor", "sensor_publisher", "sensor_publisher"),
-         topics={"/ranges": (("/front_sensor", "/rear_sensor"), ("/data_processor",)),
-                 "/distance_filtered": (("/data_processor",), ())},
-         nodes={"/front_sensor": {}, "/rear_sensor": {}, "/data_processor": {}}),
+    Case('my_robot_pkg', 'ns_robot1.launch.py', ('data_processor', 'sensor_publisher'),
+         topics={'/robot1/distance': (('/robot1/sensor_publisher',), ('/robot1/data_processor',)),
+                 '/robot1/distance_filtered': (('/robot1/data_processor',), ())},
+         nodes={'/robot1/sensor_publisher': {'publish_rate': 2.0},
+                '/robot1/data_processor': {'window_size': 3}}),
+    Case('my_robot_pkg', 'ns_two_robots.launch.py', PIPELINE * 2,
+         topics={**_robot('robot1'), **_robot('robot2')},
+         nodes={**_robot_nodes('robot1', {'robot_name': 'alpha'}),
+                **_robot_nodes('robot2', {'robot_name': 'bravo'})}),
+    Case('my_robot_pkg', 'remap_two_sensors.launch.py',
+         ('data_processor', 'sensor_publisher', 'sensor_publisher'),
+         topics={'/ranges': (('/front_sensor', '/rear_sensor'), ('/data_processor',)),
+                 '/distance_filtered': (('/data_processor',), ())},
+         nodes={'/front_sensor': {}, '/rear_sensor': {}, '/data_processor': {}}),
     # SetRemap and PushRosNamespace end with their group: the controller keeps both defaults.
-    Case("my_robot_pkg", "remap_set_remap.launch.py", PIPELINE,
-         topics={"/robot1/ranges": (("/robot1/sensor_publisher",), ("/robot1/data_processor",)),
-                 "/robot1/distance_filtered": (("/robot1/data_processor",), ()),
-                 "/distance_filtered": ((), ("/robot_controller",)),
-                 "/cmd_vel": (("/robot_controller",), ())},
-         nodes={"/robot1/sensor_publisher": {}, "/robot1/data_processor": {},
-                "/robot_controller": {}}),
+    Case('my_robot_pkg', 'remap_set_remap.launch.py', PIPELINE,
+         topics={'/robot1/ranges': (('/robot1/sensor_publisher',), ('/robot1/data_processor',)),
+                 '/robot1/distance_filtered': (('/robot1/data_processor',), ()),
+                 '/distance_filtered': ((), ('/robot_controller',)),
+                 '/cmd_vel': (('/robot_controller',), ())},
+         nodes={'/robot1/sensor_publisher': {}, '/robot1/data_processor': {},
+                '/robot_controller': {}}),
     # Mistake: the processor's rule names "distances"; it matches nothing and changes nothing.
-    Case("my_robot_pkg", "remap_matches_nothing.launch.py",
-         ("data_processor", "sensor_publisher", "sensor_publisher"),
-         topics={"/ranges": (("/front_sensor", "/rear_sensor"), ()),
-                 "/distance": ((), ("/data_processor",)),
-                 "/distance_filtered": (("/data_processor",), ())},
-         nodes={"/front_sensor": {}, "/rear_sensor": {}, "/data_processor": {}}),
+    Case('my_robot_pkg', 'remap_matches_nothing.launch.py',
+         ('data_processor', 'sensor_publisher', 'sensor_publisher'),
+         topics={'/ranges': (('/front_sensor', '/rear_sensor'), ()),
+                 '/distance': ((), ('/data_processor',)),
+                 '/distance_filtered': (('/data_processor',), ())},
+         nodes={'/front_sensor': {}, '/rear_sensor': {}, '/data_processor': {}}),
     # Mistake: '/obstacle_distance' is absolute, so both robots share it.
-    Case("my_robot_pkg", "ns_absolute_escape.launch.py", PIPELINE * 2,
-         topics={"/obstacle_distance": (("/robot1/data_processor", "/robot2/data_processor"),
-                                        ("/robot1/robot_controller", "/robot2/robot_controller")),
-                 **{topic: ends for topic, ends in {**_robot("robot1"), **_robot("robot2")}.items()
-                    if not topic.endswith("distance_filtered")}},
-         nodes={**_robot_nodes("robot1", DEFAULT_SPEED), **_robot_nodes("robot2", DEFAULT_SPEED)}),
+    Case('my_robot_pkg', 'ns_absolute_escape.launch.py', PIPELINE * 2,
+         topics={'/obstacle_distance': (('/robot1/data_processor', '/robot2/data_processor'),
+                                        ('/robot1/robot_controller', '/robot2/robot_controller')),
+                 **{topic: ends for topic, ends in {**_robot('robot1'), **_robot('robot2')}.items()
+                    if not topic.endswith('distance_filtered')}},
+         nodes={**_robot_nodes('robot1', DEFAULT_SPEED), **_robot_nodes('robot2', DEFAULT_SPEED)}),
     # Mistake: a file keyed by the bare name misses /robot1/robot_controller;
     # /**/robot_controller reaches /robot2/robot_controller.
-    Case("my_robot_pkg", "ns_param_keys.launch.py", ("robot_controller", "robot_controller"),
-         topics={"/robot1/cmd_vel": (("/robot1/robot_controller",), ()),
-                 "/robot1/distance_filtered": ((), ("/robot1/robot_controller",)),
-                 "/robot2/cmd_vel": (("/robot2/robot_controller",), ()),
-                 "/robot2/distance_filtered": ((), ("/robot2/robot_controller",))},
-         nodes={"/robot1/robot_controller": DEFAULT_SPEED,
-                "/robot2/robot_controller": {"robot_name": "bravo", "max_linear_speed": 0.8}}),
+    Case('my_robot_pkg', 'ns_param_keys.launch.py', ('robot_controller', 'robot_controller'),
+         topics={'/robot1/cmd_vel': (('/robot1/robot_controller',), ()),
+                 '/robot1/distance_filtered': ((), ('/robot1/robot_controller',)),
+                 '/robot2/cmd_vel': (('/robot2/robot_controller',), ()),
+                 '/robot2/distance_filtered': ((), ('/robot2/robot_controller',))},
+         nodes={'/robot1/robot_controller': DEFAULT_SPEED,
+                '/robot2/robot_controller': {'robot_name': 'bravo', 'max_linear_speed': 0.8}}),
     # exercise solution
-    Case("ch06_solutions", "ex65_two_sensors.launch.py",
-         ("data_processor", "sensor_publisher", "sensor_publisher"),
-         topics={"/ranges": (("/front/sensor_publisher", "/rear/sensor_publisher"),
-                             ("/data_processor",)),
-                 "/distance_filtered": (("/data_processor",), ())},
-         nodes={"/front/sensor_publisher": {}, "/rear/sensor_publisher": {},
-                "/data_processor": {}}),
+    Case('ch06_solutions', 'ex65_two_sensors.launch.py',
+         ('data_processor', 'sensor_publisher', 'sensor_publisher'),
+         topics={'/ranges': (('/front/sensor_publisher', '/rear/sensor_publisher'),
+                             ('/data_processor',)),
+                 '/distance_filtered': (('/data_processor',), ())},
+         nodes={'/front/sensor_publisher': {}, '/rear/sensor_publisher': {},
+                '/data_processor': {}}),
 ]
 
 
@@ -143,7 +143,7 @@ def _values(params: dict[str, Any], names: list[str]) -> dict[str, Any]:
     return {name: params.get(name) for name in names}
 
 
-@pytest.mark.parametrize("case", CASES, ids=lambda case: case.id)
+@pytest.mark.parametrize('case', CASES, ids=lambda case: case.id)
 def test_launch_makes_its_graph(case: Case, ros_env):
     with labkit.launch(case.package, case.launch_file, env=ros_env, cwd=paths.WORKSPACE) as run:
         run.wait_for_nodes(list(case.nodes), timeout=HANG_GUARD)
@@ -156,7 +156,7 @@ def test_launch_makes_its_graph(case: Case, ros_env):
         exit_code = run.stop()
     output = run.output()
     assert still_running, output
-    assert "process has died" not in output, output
+    assert 'process has died' not in output, output
     started = sorted(m.group(1) for line in output.splitlines() if (m := STARTED.match(line)))
     assert started == sorted(case.executables), output
     assert sorted(snapshot.nodes) == sorted(case.nodes), output
@@ -170,25 +170,25 @@ def _graded_by_exercise_checks() -> set[tuple[str, str]]:
     """Solution launch files that find the student's package (FindPackageShare(
     'my_ws_exercises')): they run only as a student's package, which
     tests/exercises builds and launches, so they are tested there."""
-    return {("ch06_solutions", Path(relative).name)
+    return {('ch06_solutions', Path(relative).name)
             for exercise in checks.EXERCISES.values() for relative in exercise.files
-            if relative.startswith("launch/")
-            and "my_ws_exercises" in exercise.solution(relative).read_text()}
+            if relative.startswith('launch/')
+            and 'my_ws_exercises' in exercise.solution(relative).read_text()}
 
 
 def test_every_launch_file_the_lesson_shows_is_tested():
     tested = {(case.package, case.launch_file) for case in CASES} | _graded_by_exercise_checks()
     shown = launch_files_included_by(LESSON)
-    assert shown, f"{LESSON.name} shows no launch file"
-    assert shown <= tested, f"launch files shown but not tested: {sorted(shown - tested)}"
+    assert shown, f'{LESSON.name} shows no launch file'
+    assert shown <= tested, f'launch files shown but not tested: {sorted(shown - tested)}'
 
 
 def test_every_new_snippet_of_the_lesson_is_tested():
     """Every ns_*/remap_* launch file of my_robot_pkg and every ex65 solution."""
-    folder = paths.SNIPPETS / "my_robot_pkg" / "launch"
-    files = {("my_robot_pkg", p.name) for pattern in ("ns_*.launch.py", "remap_*.launch.py")
+    folder = paths.SNIPPETS / 'my_robot_pkg' / 'launch'
+    files = {('my_robot_pkg', p.name) for pattern in ('ns_*.launch.py', 'remap_*.launch.py')
              for p in folder.glob(pattern)}
-    files |= {("ch06_solutions", p.name)
-              for p in (paths.SNIPPETS / "ch06_solutions" / "launch").glob("ex65_*.launch.py")}
+    files |= {('ch06_solutions', p.name)
+              for p in (paths.SNIPPETS / 'ch06_solutions' / 'launch').glob('ex65_*.launch.py')}
     tested = {(case.package, case.launch_file) for case in CASES} | _graded_by_exercise_checks()
     assert files and files <= tested, sorted(files - tested)

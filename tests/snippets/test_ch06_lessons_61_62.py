@@ -30,8 +30,8 @@ from textbook import paths
 
 from ._shown_snippets import launch_files_included_by
 
-LESSONS = [paths.LESSONS / "ch06/L1/01_anatomy_of_a_launch_file.md",
-           paths.LESSONS / "ch06/L1/02_parameters_in_launch_files.md"]
+LESSONS = [paths.LESSONS / 'ch06/L1/01_anatomy_of_a_launch_file.md',
+           paths.LESSONS / 'ch06/L1/02_parameters_in_launch_files.md']
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
 
 
@@ -47,44 +47,44 @@ class Case:
 
     @property
     def id(self) -> str:
-        return " ".join((self.launch_file, *self.arguments))
+        return ' '.join((self.launch_file, *self.arguments))
 
 
-ROBOT_PARAMS_YAML = {"robot_name": "scout", "update_rate": 20.0, "max_linear_speed": 0.8,
-                     "max_angular_speed": 1.5, "enabled_sensors": ["lidar"],
-                     "sensors.lidar.topic": "front_scan", "sensors.lidar.range_max": 8.0,
-                     "sensors.camera.enabled": False}
+ROBOT_PARAMS_YAML = {'robot_name': 'scout', 'update_rate': 20.0, 'max_linear_speed': 0.8,
+                     'max_angular_speed': 1.5, 'enabled_sensors': ['lidar'],
+                     'sensors.lidar.topic': 'front_scan', 'sensors.lidar.range_max': 8.0,
+                     'sensors.camera.enabled': False}
 
 RUNNING = [
     # lesson 6.1
-    Case("my_robot_pkg", "robot_system.launch.py",
-         nodes={"/sensor_publisher": {"publish_rate": 2.0},
-                "/data_processor": {"window_size": 3}}),
-    Case("my_robot_pkg", "print_buffered.launch.py", nodes={"/print_counter": {}}),
-    Case("my_robot_pkg", "print_unbuffered.launch.py",
-         nodes={"/tty_counter": {}, "/unbuffered_counter": {}}),
+    Case('my_robot_pkg', 'robot_system.launch.py',
+         nodes={'/sensor_publisher': {'publish_rate': 2.0},
+                '/data_processor': {'window_size': 3}}),
+    Case('my_robot_pkg', 'print_buffered.launch.py', nodes={'/print_counter': {}}),
+    Case('my_robot_pkg', 'print_unbuffered.launch.py',
+         nodes={'/tty_counter': {}, '/unbuffered_counter': {}}),
     # lesson 6.2
-    Case("my_robot_pkg", "controller_params.launch.py",
-         nodes={"/sensor_publisher": {"publish_rate": 4.0},
-                "/data_processor": {"window_size": 5},
-                "/robot_controller": {"robot_name": "rover", "update_rate": 5.0,
-                                      "max_linear_speed": 0.3, "enabled_sensors": ["lidar"],
-                                      "sensors.camera.enabled": True}}),
-    Case("my_robot_pkg", "controller_yaml.launch.py",
-         nodes={"/robot_controller": ROBOT_PARAMS_YAML}),
-    Case("my_robot_pkg", "layered_params.launch.py",
-         nodes={"/sensor_publisher": {"publish_rate": 1.0},
-                "/robot_controller": {**ROBOT_PARAMS_YAML, "max_linear_speed": 0.2,
-                                      "robot_name": "scout_2"}}),
-    Case("my_robot_pkg", "mistake_robot_name_arg.launch.py", ("robot_name:=rover",),
-         nodes={"/robot_controller": {"robot_name": "rover"}}),
-    Case("my_robot_pkg", "robot_name_arg.launch.py", ("robot_name:=042",),
-         nodes={"/robot_controller": {"robot_name": "042"}}),
+    Case('my_robot_pkg', 'controller_params.launch.py',
+         nodes={'/sensor_publisher': {'publish_rate': 4.0},
+                '/data_processor': {'window_size': 5},
+                '/robot_controller': {'robot_name': 'rover', 'update_rate': 5.0,
+                                      'max_linear_speed': 0.3, 'enabled_sensors': ['lidar'],
+                                      'sensors.camera.enabled': True}}),
+    Case('my_robot_pkg', 'controller_yaml.launch.py',
+         nodes={'/robot_controller': ROBOT_PARAMS_YAML}),
+    Case('my_robot_pkg', 'layered_params.launch.py',
+         nodes={'/sensor_publisher': {'publish_rate': 1.0},
+                '/robot_controller': {**ROBOT_PARAMS_YAML, 'max_linear_speed': 0.2,
+                                      'robot_name': 'scout_2'}}),
+    Case('my_robot_pkg', 'mistake_robot_name_arg.launch.py', ('robot_name:=rover',),
+         nodes={'/robot_controller': {'robot_name': 'rover'}}),
+    Case('my_robot_pkg', 'robot_name_arg.launch.py', ('robot_name:=042',),
+         nodes={'/robot_controller': {'robot_name': '042'}}),
     # exercise solutions
-    Case("ch06_solutions", "ex61_full_pipeline.launch.py",
-         nodes={"/sensor_publisher": {}, "/data_processor": {}, "/robot_controller": {}}),
-    Case("ch06_solutions", "ex61_front_sensor.launch.py",
-         nodes={"/front_sensor": {"publish_rate": 2.0}, "/data_processor": {}}),
+    Case('ch06_solutions', 'ex61_full_pipeline.launch.py',
+         nodes={'/sensor_publisher': {}, '/data_processor': {}, '/robot_controller': {}}),
+    Case('ch06_solutions', 'ex61_front_sensor.launch.py',
+         nodes={'/front_sensor': {'publish_rate': 2.0}, '/data_processor': {}}),
     # (the 6.2 exercises run in the student's package: tests/exercises checks them)
 ]
 
@@ -92,18 +92,18 @@ RUNNING = [
 # must contain): launch ends by itself.
 FAILING = [
     # lesson 6.1: nothing starts, launch reports the missing executable
-    (Case("my_robot_pkg", "mistake_executable_name.launch.py"), 1,
+    (Case('my_robot_pkg', 'mistake_executable_name.launch.py'), 1,
      ["[ERROR] [launch]: Caught exception in launch (see debug for traceback): executable "
       "'sensor_publisher.py' not found on the libexec directory '"]),
     # lesson 6.2: the only node refuses its parameter and dies
-    (Case("my_robot_pkg", "mistake_integer_rate.launch.py"), None,
+    (Case('my_robot_pkg', 'mistake_integer_rate.launch.py'), None,
      ["[robot_controller-1] rclpy.exceptions.InvalidParameterTypeException: Trying to set "
       "parameter 'update_rate' to '2' of type 'INTEGER', expecting type 'DOUBLE': update_rate",
-      "[ERROR] [robot_controller-1]: process has died [pid "]),
-    (Case("my_robot_pkg", "mistake_robot_name_arg.launch.py", ("robot_name:=042",)), None,
+      '[ERROR] [robot_controller-1]: process has died [pid ']),
+    (Case('my_robot_pkg', 'mistake_robot_name_arg.launch.py', ('robot_name:=042',)), None,
      ["[robot_controller-1] rclpy.exceptions.InvalidParameterTypeException: Trying to set "
       "parameter 'robot_name' to '34' of type 'INTEGER', expecting type 'STRING': robot_name",
-      "[ERROR] [robot_controller-1]: process has died [pid "]),
+      '[ERROR] [robot_controller-1]: process has died [pid ']),
 ]
 
 
@@ -112,14 +112,14 @@ def graph():
     """An rclpy node in this test's ROS domain, to look at the graph."""
     context = Context()
     rclpy.init(context=context)
-    node = rclpy.create_node("ch06_test_observer", context=context)
+    node = rclpy.create_node('ch06_test_observer', context=context)
     yield node
     node.destroy_node()
     rclpy.shutdown(context=context)
 
 
 def _command(case: Case) -> list[str]:
-    return ["ros2", "launch", case.package, case.launch_file, *case.arguments]
+    return ['ros2', 'launch', case.package, case.launch_file, *case.arguments]
 
 
 def _stop(proc: subprocess.Popen) -> str:
@@ -131,7 +131,7 @@ def _stop(proc: subprocess.Popen) -> str:
     except subprocess.TimeoutExpired:
         os.killpg(proc.pid, signal.SIGKILL)
         out, _ = proc.communicate()
-        pytest.fail(f"launch did not stop on Ctrl+C:\n{out}")
+        pytest.fail(f'launch did not stop on Ctrl+C:\n{out}')
     return out
 
 
@@ -161,16 +161,16 @@ def _wait_for_nodes(graph: RclpyNode, names: set[str], proc: subprocess.Popen) -
 
 def _get_parameters(graph: RclpyNode, node: str, names: list[str]) -> dict[str, Any]:
     """What ``ros2 param get NODE NAME`` asks: the node's get_parameters service."""
-    client = graph.create_client(GetParameters, f"{node}/get_parameters")
+    client = graph.create_client(GetParameters, f'{node}/get_parameters')
     try:
-        assert client.wait_for_service(timeout_sec=HANG_GUARD), f"{node}: no parameter service"
+        assert client.wait_for_service(timeout_sec=HANG_GUARD), f'{node}: no parameter service'
         future = client.call_async(GetParameters.Request(names=names))
         executor = SingleThreadedExecutor(context=graph.context)
         executor.add_node(graph)
         executor.spin_until_future_complete(future, timeout_sec=HANG_GUARD)
         executor.remove_node(graph)
         executor.shutdown()
-        assert future.done(), f"{node}: get_parameters got no answer"
+        assert future.done(), f'{node}: get_parameters got no answer'
         values = [parameter_value_to_python(v) for v in future.result().values]
         return dict(zip(names, values, strict=True))
     finally:
@@ -178,22 +178,22 @@ def _get_parameters(graph: RclpyNode, node: str, names: list[str]) -> dict[str, 
 
 
 def _normalized(value: Any) -> Any:
-    return list(value) if isinstance(value, (list, tuple)) or hasattr(value, "tolist") else value
+    return list(value) if isinstance(value, (list, tuple)) or hasattr(value, 'tolist') else value
 
 
-@pytest.mark.parametrize("case", RUNNING, ids=lambda case: case.id)
+@pytest.mark.parametrize('case', RUNNING, ids=lambda case: case.id)
 def test_launch_starts_nodes_with_their_parameters(case: Case, ros_env, graph):
     with launched(case, ros_env) as proc:
         up = _wait_for_nodes(graph, set(case.nodes), proc)
         got = {node: _get_parameters(graph, node, list(expected)) if expected else {}
                for node, expected in case.nodes.items() if node in up}
-    assert up == set(case.nodes), f"nodes missing: {set(case.nodes) - up}\n{proc.output}"
+    assert up == set(case.nodes), f'nodes missing: {set(case.nodes) - up}\n{proc.output}'
     got = {node: {k: _normalized(v) for k, v in params.items()} for node, params in got.items()}
     assert got == case.nodes, proc.output
-    assert "process has died" not in proc.output.split("user interrupted")[0], proc.output
+    assert 'process has died' not in proc.output.split('user interrupted')[0], proc.output
 
 
-@pytest.mark.parametrize("case,code,expected", FAILING, ids=lambda v: getattr(v, "id", ""))
+@pytest.mark.parametrize('case,code,expected', FAILING, ids=lambda v: getattr(v, 'id', ''))
 def test_mistake_is_reported_and_launch_ends(case: Case, code: int | None, expected: list[str],
                                              ros_env):
     proc = subprocess.Popen(_command(case), env=ros_env, cwd=paths.WORKSPACE,
@@ -204,7 +204,7 @@ def test_mistake_is_reported_and_launch_ends(case: Case, code: int | None, expec
         out, _ = proc.communicate(timeout=HANG_GUARD)
     except subprocess.TimeoutExpired:
         out = _stop(proc)
-        pytest.fail(f"launch kept running after the mistake:\n{out}")
+        pytest.fail(f'launch kept running after the mistake:\n{out}')
     for line in expected:
         assert line in out, out
     if code is not None:
@@ -214,21 +214,21 @@ def test_mistake_is_reported_and_launch_ends(case: Case, code: int | None, expec
 def _graded_solutions() -> set[tuple[str, str]]:
     """Solution launch files of exercises: tests/exercises runs them in a student's package."""
     return {(exercise.solutions, Path(f).name) for exercise in checks.EXERCISES.values()
-            for f in exercise.files if f.endswith(".launch.py")}
+            for f in exercise.files if f.endswith('.launch.py')}
 
 
-@pytest.mark.parametrize("lesson", LESSONS, ids=lambda p: p.name)
+@pytest.mark.parametrize('lesson', LESSONS, ids=lambda p: p.name)
 def test_every_launch_file_a_lesson_shows_is_tested(lesson):
     tested = {(case.package, case.launch_file) for case in RUNNING} | _graded_solutions()
     tested |= {(case.package, case.launch_file) for case, _, _ in FAILING}
     shown = launch_files_included_by(lesson)
-    assert shown, f"{lesson.name} shows no launch file"
-    assert shown <= tested, f"launch files shown but not tested: {sorted(shown - tested)}"
+    assert shown, f'{lesson.name} shows no launch file'
+    assert shown <= tested, f'launch files shown but not tested: {sorted(shown - tested)}'
 
 
 def test_every_solution_launch_file_of_61_62_is_tested():
-    folder = paths.SNIPPETS / "ch06_solutions" / "launch"
-    solutions = {p.name for p in folder.glob("ex6[12]_*.launch.py")}
-    tested = {case.launch_file for case in RUNNING if case.package == "ch06_solutions"}
-    tested |= {name for package, name in _graded_solutions() if package == "ch06_solutions"}
+    folder = paths.SNIPPETS / 'ch06_solutions' / 'launch'
+    solutions = {p.name for p in folder.glob('ex6[12]_*.launch.py')}
+    tested = {case.launch_file for case in RUNNING if case.package == 'ch06_solutions'}
+    tested |= {name for package, name in _graded_solutions() if package == 'ch06_solutions'}
     assert solutions and solutions <= tested, sorted(solutions - tested)

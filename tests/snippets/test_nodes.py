@@ -23,8 +23,8 @@ class NodeProcess:
     """A node started from the install tree, its output collected line by line."""
 
     def __init__(self, ros_env, package: str, exe: str, *ros_args: str):
-        path = Path(workspace.INSTALL) / package / "lib" / package / exe
-        self.proc = subprocess.Popen([str(path), "--ros-args", *ros_args], env=ros_env,
+        path = Path(workspace.INSTALL) / package / 'lib' / package / exe
+        self.proc = subprocess.Popen([str(path), '--ros-args', *ros_args], env=ros_env,
                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                      text=True)
         self.lines: list[str] = []
@@ -33,11 +33,11 @@ class NodeProcess:
 
     def _read(self) -> None:
         for line in self.proc.stdout:
-            self.lines.append(line.rstrip("\n"))
+            self.lines.append(line.rstrip('\n'))
 
     @property
     def output(self) -> str:
-        return "\n".join(self.lines)
+        return '\n'.join(self.lines)
 
     def wait_until(self, condition) -> bool:
         """Wait (up to the hang guard) until ``condition(lines)`` holds."""
@@ -56,7 +56,7 @@ class NodeProcess:
         except subprocess.TimeoutExpired:
             self.proc.kill()
             self.proc.wait()
-            pytest.fail(f"did not stop on SIGINT:\n{self.output}")
+            pytest.fail(f'did not stop on SIGINT:\n{self.output}')
         self._reader.join(timeout=STARTUP_LIMIT)
         return self.proc.returncode
 
@@ -70,7 +70,7 @@ def graph():
     """An rclpy node in this test's domain, to look at the ROS graph."""
     context = Context()
     rclpy.init(context=context)
-    node = rclpy.create_node("test_observer", context=context)
+    node = rclpy.create_node('test_observer', context=context)
     yield node
     node.destroy_node()
     rclpy.shutdown(context=context)
@@ -86,31 +86,31 @@ def _wait_for_node(graph, name: str, proc: subprocess.Popen) -> bool:
 
 
 def test_there_are_executables():
-    assert EXECUTABLES, "no executables installed from snippets/"
+    assert EXECUTABLES, 'no executables installed from snippets/'
 
 
-@pytest.mark.parametrize("package,exe", EXECUTABLES, ids=lambda v: v)
+@pytest.mark.parametrize('package,exe', EXECUTABLES, ids=lambda v: v)
 def test_node_starts_and_stops_cleanly(package, exe, ros_env, graph):
-    probe = f"probe_{exe}"
-    node = NodeProcess(ros_env, package, exe, "-r", f"__node:={probe}")
+    probe = f'probe_{exe}'
+    node = NodeProcess(ros_env, package, exe, '-r', f'__node:={probe}')
     appeared = _wait_for_node(graph, probe, node.proc)
     code = node.stop()
-    assert appeared, f"{package}/{exe} never appeared on the ROS graph:\n{node.output}"
-    assert code == 0, f"{package}/{exe} exited with {code} on SIGINT:\n{node.output}"
-    assert "Traceback" not in node.output, node.output
+    assert appeared, f'{package}/{exe} never appeared on the ROS graph:\n{node.output}'
+    assert code == 0, f'{package}/{exe} exited with {code} on SIGINT:\n{node.output}'
+    assert 'Traceback' not in node.output, node.output
 
 
 def test_processor_receives_what_the_sensor_publishes(ros_env):
-    processor = NodeProcess(ros_env, "my_robot_pkg", "data_processor")
-    sensor = NodeProcess(ros_env, "my_robot_pkg", "sensor_publisher",
-                         "-p", "publish_rate:=10.0")
-    got_five = processor.wait_until(lambda lines: count("Received ")(lines) >= 5)
+    processor = NodeProcess(ros_env, 'my_robot_pkg', 'data_processor')
+    sensor = NodeProcess(ros_env, 'my_robot_pkg', 'sensor_publisher',
+                         '-p', 'publish_rate:=10.0')
+    got_five = processor.wait_until(lambda lines: count('Received ')(lines) >= 5)
     assert [sensor.stop(), processor.stop()] == [0, 0]
     assert got_five, (sensor.output, processor.output)
-    published = [line.split(": Reading #")[1].split(": ")[1] for line in sensor.lines
-                 if ": Reading #" in line]
-    received = [line.split("Received ")[1].split(" ->")[0] for line in processor.lines
-                if "Received " in line]
+    published = [line.split(': Reading #')[1].split(': ')[1] for line in sensor.lines
+                 if ': Reading #' in line]
+    received = [line.split('Received ')[1].split(' ->')[0] for line in processor.lines
+                if 'Received ' in line]
     # Discovery may drop the first readings and shutdown the last ones; the
     # rest arrive complete and in order.  The sensor logs a reading after
     # publishing it, so one stopped in between was received but never logged.
@@ -121,23 +121,23 @@ def test_processor_receives_what_the_sensor_publishes(ros_env):
 
 
 def test_controller_reads_typed_and_nested_parameters_from_yaml(ros_env, ws_install):
-    params = ws_install / "my_robot_pkg/share/my_robot_pkg/config/robot_params.yaml"
-    controller = NodeProcess(ros_env, "my_robot_pkg", "robot_controller",
-                             "--params-file", str(params))
-    configured = controller.wait_until(count("sensors.camera:"))
+    params = ws_install / 'my_robot_pkg/share/my_robot_pkg/config/robot_params.yaml'
+    controller = NodeProcess(ros_env, 'my_robot_pkg', 'robot_controller',
+                             '--params-file', str(params))
+    configured = controller.wait_until(count('sensors.camera:'))
     assert controller.stop() == 0, controller.output
     assert configured, controller.output
     out = controller.output
     assert 'Robot "scout" starting with update_rate=20.0 Hz' in out
-    assert "Speed limits: linear 0.8 m/s, angular 1.5 rad/s" in out
-    assert "Enabled sensors: lidar" in out
-    assert "sensors.lidar: enabled=True, topic=front_scan, range_max=8.0" in out
+    assert 'Speed limits: linear 0.8 m/s, angular 1.5 rad/s' in out
+    assert 'Enabled sensors: lidar' in out
+    assert 'sensors.lidar: enabled=True, topic=front_scan, range_max=8.0' in out
 
 
 def test_controller_rejects_a_parameter_of_the_wrong_type(ros_env):
-    controller = NodeProcess(ros_env, "my_robot_pkg", "robot_controller",
-                             "-p", "update_rate:=fast")
+    controller = NodeProcess(ros_env, 'my_robot_pkg', 'robot_controller',
+                             '-p', 'update_rate:=fast')
     controller.proc.wait(timeout=STARTUP_LIMIT)
     controller._reader.join(timeout=STARTUP_LIMIT)
     assert controller.proc.returncode != 0
-    assert "update_rate" in controller.output
+    assert 'update_rate' in controller.output

@@ -27,7 +27,7 @@ class Launch:
 
     def __init__(self, launch_file: str, env: dict[str, str]) -> None:
         self.proc = subprocess.Popen(
-            ["ros2", "launch", "my_robot_pkg", launch_file], env=env, cwd=paths.WORKSPACE,
+            ['ros2', 'launch', 'my_robot_pkg', launch_file], env=env, cwd=paths.WORKSPACE,
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
             start_new_session=True)
         self.lines: list[str] = []
@@ -38,7 +38,7 @@ class Launch:
     def _read(self) -> None:
         for line in self.proc.stdout:
             with self._changed:
-                self.lines.append(line.rstrip("\n"))
+                self.lines.append(line.rstrip('\n'))
                 self._changed.notify_all()
         with self._changed:
             self._changed.notify_all()
@@ -52,7 +52,7 @@ class Launch:
                 or not self._reader.is_alive(), timeout=HANG_GUARD)
             index = next((i for i, line in enumerate(self.lines) if regex.search(line)), None)
             assert found and index is not None, \
-                f"no line matching {pattern!r}:\n" + "\n".join(self.lines)
+                f'no line matching {pattern!r}:\n' + '\n'.join(self.lines)
             return self.lines[:index + 1]
 
     def stop(self) -> list[str]:
@@ -64,7 +64,7 @@ class Launch:
         except subprocess.TimeoutExpired:
             os.killpg(self.proc.pid, signal.SIGKILL)
             self.proc.wait()
-            pytest.fail("launch did not stop on Ctrl+C:\n" + "\n".join(self.lines))
+            pytest.fail('launch did not stop on Ctrl+C:\n' + '\n'.join(self.lines))
         self._reader.join(HANG_GUARD)
         return list(self.lines)
 
@@ -72,7 +72,7 @@ class Launch:
 @pytest.fixture
 def terminal_env(ros_env) -> dict[str, str]:
     """The sourced environment without the book's PYTHONUNBUFFERED=1."""
-    return {**ros_env, "PYTHONUNBUFFERED": ""}
+    return {**ros_env, 'PYTHONUNBUFFERED': ''}
 
 
 @contextmanager
@@ -85,21 +85,21 @@ def launched(launch_file: str, env: dict[str, str]) -> Iterator[Launch]:
 
 
 def test_print_output_waits_in_the_buffer_until_the_node_ends(terminal_env):
-    with launched("print_buffered.launch.py", terminal_env) as run:
-        while_running = run.wait_for(r"\[print_counter\]: logged tick 3$")
+    with launched('print_buffered.launch.py', terminal_env) as run:
+        while_running = run.wait_for(r'\[print_counter\]: logged tick 3$')
         everything = run.stop()
-    assert not [line for line in while_running if "printed tick" in line], while_running
+    assert not [line for line in while_running if 'printed tick' in line], while_running
     after_stop = everything[len(while_running):]
     for tick in (1, 2, 3):
-        assert f"[print_counter-1] print_counter printed tick {tick}" in after_stop, everything
-    assert any("process has finished cleanly" in line for line in after_stop), everything
+        assert f'[print_counter-1] print_counter printed tick {tick}' in after_stop, everything
+    assert any('process has finished cleanly' in line for line in after_stop), everything
 
 
-@pytest.mark.parametrize("node", ["tty_counter", "unbuffered_counter"])
+@pytest.mark.parametrize('node', ['tty_counter', 'unbuffered_counter'])
 def test_emulate_tty_and_pythonunbuffered_show_print_at_once(terminal_env, node):
-    with launched("print_unbuffered.launch.py", terminal_env) as run:
+    with launched('print_unbuffered.launch.py', terminal_env) as run:
         # The printed line comes before the logged line of the *next* tick.
-        lines = run.wait_for(rf"\[{node}\]: logged tick 2")
-    printed = [line for line in lines if f"{node} printed tick 1" in line]
-    assert printed and re.match(r"\[print_counter-[12]\] ", printed[0]), lines
+        lines = run.wait_for(rf'\[{node}\]: logged tick 2')
+    printed = [line for line in lines if f'{node} printed tick 1' in line]
+    assert printed and re.match(r'\[print_counter-[12]\] ', printed[0]), lines
 

@@ -71,7 +71,7 @@ def test_cli_bad_input_exits_2_naming_it(sourced, tmp_path):
     result = speccheck('static', str(bad), '--launch', 'my_robot_pkg', 'robot_system.launch.py',
                        env=sourced)
     assert (result.returncode, result.stdout) == (2, '')
-    assert result.stderr.startswith(f"speccheck: error: {bad}:3: nodes./a.pakage: unknown key")
+    assert result.stderr.startswith(f'speccheck: error: {bad}:3: nodes./a.pakage: unknown key')
     missing = speccheck('static', str(LAUNCH_FILES / 'scoped.yaml'), '--launch', 'my_robot_pkg',
                         'nope.launch.py', env=sourced)
     assert missing.returncode == 2

@@ -15,28 +15,28 @@ def test_outputs_are_recorded_in_an_isolated_sourced_environment(tmp_path):
     lesson = load(write_lesson(tmp_path, code_cells(
         "import os\n"
         "print(os.environ['ROS_DOMAIN_ID'], os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'])",
-        "%%bash\nros2 pkg prefix my_robot_pkg 2>/dev/null || echo $AMENT_PREFIX_PATH",
-        "%%bash\nls -F src/",
+        '%%bash\nros2 pkg prefix my_robot_pkg 2>/dev/null || echo $AMENT_PREFIX_PATH',
+        '%%bash\nls -F src/',
         "print(os.environ.get('TEXTBOOK_APPLY_SOLUTIONS'))")))
     notebook = execute.execute(lesson)
-    outputs = ["".join(o.get("text", "") for o in c.outputs) for c in notebook.cells
-               if c.cell_type == "code"]
+    outputs = [''.join(o.get('text', '') for o in c.outputs) for c in notebook.cells
+               if c.cell_type == 'code']
     domain, discovery = outputs[0].split()
-    assert 1 <= int(domain) <= 89 and discovery == "LOCALHOST"
-    assert "build/ws/install/my_robot_pkg" in outputs[1]
+    assert 1 <= int(domain) <= 89 and discovery == 'LOCALHOST'
+    assert 'build/ws/install/my_robot_pkg' in outputs[1]
     # src/ holds plain folders (copies) of the book's packages, like a student's workspace
-    assert "my_robot_pkg/" in outputs[2].split()
-    assert outputs[3].strip() == "1"  # the book's build applies solutions and fails on a check
+    assert 'my_robot_pkg/' in outputs[2].split()
+    assert outputs[3].strip() == '1'  # the book's build applies solutions and fails on a check
 
 
 def test_a_lesson_editing_src_never_changes_snippets(tmp_path):
     lesson = load(write_lesson(tmp_path, code_cells(
         "%%bash\necho '# edited by a lesson' >> src/my_robot_pkg/setup.py\n"
         "mkdir -p src/my_ws_exercises && touch src/my_ws_exercises/package.xml")))
-    before = (paths.SNIPPETS / "my_robot_pkg" / "setup.py").read_bytes()
+    before = (paths.SNIPPETS / 'my_robot_pkg' / 'setup.py').read_bytes()
     execute.execute(lesson)
-    assert (paths.SNIPPETS / "my_robot_pkg" / "setup.py").read_bytes() == before
-    assert not (paths.SNIPPETS / "my_ws_exercises").exists()
+    assert (paths.SNIPPETS / 'my_robot_pkg' / 'setup.py').read_bytes() == before
+    assert not (paths.SNIPPETS / 'my_ws_exercises').exists()
 
 
 def test_the_build_flag_is_the_one_labkit_reads():
@@ -44,25 +44,25 @@ def test_the_build_flag_is_the_one_labkit_reads():
 
 
 def test_failing_cell_names_lesson_line_cell_and_error(tmp_path):
-    path = write_lesson(tmp_path, code_cells("x = 1", "print('before')\n1 / 0"))
+    path = write_lesson(tmp_path, code_cells('x = 1', "print('before')\n1 / 0"))
     line = path.read_text().splitlines().index("print('before')") + 1
     with pytest.raises(execute.LessonExecutionError) as error:
         execute.execute(load(path))
     message = str(error.value)
     assert f"demo.md:{line}: cell 3 (\"print('before')\") failed" in message
-    assert "ZeroDivisionError: division by zero" in message
-    assert "| before" in message  # what the cell printed before failing
+    assert 'ZeroDivisionError: division by zero' in message
+    assert '| before' in message  # what the cell printed before failing
 
 
 def test_failing_shell_command_fails_the_lesson(tmp_path):
-    lesson = load(write_lesson(tmp_path, code_cells("%%bash\necho trying\nexit 3")))
-    with pytest.raises(execute.LessonExecutionError, match="CalledProcessError"):
+    lesson = load(write_lesson(tmp_path, code_cells('%%bash\necho trying\nexit 3')))
+    with pytest.raises(execute.LessonExecutionError, match='CalledProcessError'):
         execute.execute(lesson)
 
 
 def test_a_hung_cell_is_stopped_and_reported(tmp_path):
-    lesson = load(write_lesson(tmp_path, code_cells("import time\ntime.sleep(60)")))
-    with pytest.raises(execute.LessonExecutionError, match=r"no result after 3 s"):
+    lesson = load(write_lesson(tmp_path, code_cells('import time\ntime.sleep(60)')))
+    with pytest.raises(execute.LessonExecutionError, match=r'no result after 3 s'):
         execute.execute(lesson, timeout=3)
 
 
@@ -71,8 +71,8 @@ def test_processes_left_running_are_killed_and_fail_the_lesson(tmp_path):
     lesson = load(write_lesson(tmp_path, code_cells(
         "import subprocess\n"
         "proc = subprocess.Popen(['sleep', '300'], start_new_session=True)")))
-    with pytest.raises(execute.LessonExecutionError, match="still running") as error:
+    with pytest.raises(execute.LessonExecutionError, match='still running') as error:
         execute.execute(lesson)
-    assert "sleep 300" in str(error.value)
-    pid = int(str(error.value).split("pid ")[1].split(":")[0])
+    assert 'sleep 300' in str(error.value)
+    pid = int(str(error.value).split('pid ')[1].split(':')[0])
     assert not psutil.pid_exists(pid) or psutil.Process(pid).status() == psutil.STATUS_ZOMBIE

@@ -7,41 +7,41 @@ from textbook import settings
 
 
 def write(tmp_path, table: str):
-    path = tmp_path / "pyproject.toml"
-    path.write_text(f"[tool.textbook]\n{table}\n")
+    path = tmp_path / 'pyproject.toml'
+    path.write_text(f'[tool.textbook]\n{table}\n')
     return path
 
 
 def test_pyproject_values_are_read(tmp_path):
-    loaded = settings.load(write(tmp_path, "cell_timeout = 60\njobs = 1\nfresh = true"), {})
+    loaded = settings.load(write(tmp_path, 'cell_timeout = 60\njobs = 1\nfresh = true'), {})
     assert (loaded.cell_timeout, loaded.jobs, loaded.fresh) == (60, 1, True)
 
 
 def test_missing_values_take_the_defaults(tmp_path):
-    assert settings.load(write(tmp_path, ""), {}) == settings.Settings()
+    assert settings.load(write(tmp_path, ''), {}) == settings.Settings()
 
 
 def test_an_environment_variable_overrides_the_file(tmp_path):
-    path = write(tmp_path, "jobs = 2")
-    loaded = settings.load(path, {"TEXTBOOK_JOBS": "1", "TEXTBOOK_FRESH": "1"})
+    path = write(tmp_path, 'jobs = 2')
+    loaded = settings.load(path, {'TEXTBOOK_JOBS': '1', 'TEXTBOOK_FRESH': '1'})
     assert (loaded.jobs, loaded.fresh) == (1, True)
 
 
 def test_a_bad_variable_is_named(tmp_path):
     with pytest.raises(ValueError,
                        match="TEXTBOOK_CELL_TIMEOUT: expected a whole number, got 'soon'"):
-        settings.load(write(tmp_path, ""), {"TEXTBOOK_CELL_TIMEOUT": "soon"})
+        settings.load(write(tmp_path, ''), {'TEXTBOOK_CELL_TIMEOUT': 'soon'})
 
 
 def test_a_bad_file_value_names_the_file_and_setting(tmp_path):
-    path = write(tmp_path, "jobs = 0")
-    with pytest.raises(ValueError, match=r"\[tool.textbook\] jobs: expected at least 1, got 0"):
+    path = write(tmp_path, 'jobs = 0')
+    with pytest.raises(ValueError, match=r'\[tool.textbook\] jobs: expected at least 1, got 0'):
         settings.load(path, {})
 
 
 def test_an_unknown_setting_is_refused(tmp_path):
-    with pytest.raises(ValueError, match="unknown setting.*timeout_s"):
-        settings.load(write(tmp_path, "timeout_s = 3"), {})
+    with pytest.raises(ValueError, match='unknown setting.*timeout_s'):
+        settings.load(write(tmp_path, 'timeout_s = 3'), {})
 
 
 def test_the_repository_settings_load():

@@ -27,7 +27,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser.add_argument('--window', type=float, default=DEFAULT_WINDOW,
                         help=f'seconds to measure topic rates (live; default {DEFAULT_WINDOW:g})')
     parser.add_argument('--timeout', type=float, default=20.0,
-                        help='seconds to wait for the spec\'s nodes after starting a launch '
+                        help="seconds to wait for the spec's nodes after starting a launch "
                              '(live; default 20)')
     parser.add_argument('rest', nargs='*', metavar='PATH | name:=value',
                         help='a launch file path (instead of --launch), then launch arguments')

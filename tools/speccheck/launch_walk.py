@@ -334,7 +334,7 @@ class _Walker:
 
     def _add_parameters(self, planned: PlannedNode, item: Any, origin_prefix: str) -> None:
         if isinstance(item, dict):
-            planned.settings += [ParameterSetting(name, value, 'the Node\'s parameters', True)
+            planned.settings += [ParameterSetting(name, value, "the Node's parameters", True)
                                  for name, value in item.items()]
         elif isinstance(item, ParameterSetting):
             planned.settings.append(item)

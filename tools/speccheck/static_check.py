@@ -197,7 +197,7 @@ def _parameters(node_spec: NodeSpec, node: PlannedNode) -> list[Finding]:
         setting = given.get(wanted.name)
         if setting is None:
             findings.append(Finding(requirement, NOT_CHECKED,
-                                    'not set by the launch file, so the node\'s own default '
+                                    "not set by the launch file, so the node's own default "
                                     f'applies (the running check reads it); spec: '
                                     f'{values.expectation(wanted)}'))
             continue

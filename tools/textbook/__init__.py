@@ -4,4 +4,4 @@ workspace in an isolated ROS domain, cached by content and rendered by mkdocs.
 Entry point: ``python -m textbook build|serve|test``.
 """
 
-__version__ = "0.1.0"
+__version__ = '0.1.0'

@@ -23,29 +23,29 @@ def _exec(*args: str) -> int:
     SIGTERM reach mkdocs or pytest directly, and passes their exit code on.
     """
     os.chdir(paths.ROOT)
-    env = dict(os.environ, NO_MKDOCS_2_WARNING="1")
-    os.execve(sys.executable, [sys.executable, "-m", *args], env)
+    env = dict(os.environ, NO_MKDOCS_2_WARNING='1')
+    os.execve(sys.executable, [sys.executable, '-m', *args], env)
     return 1  # not reached
 
 
 def _mkdocs(*args: str) -> int:
-    return _exec("mkdocs", *args, "-f", str(paths.MKDOCS_YML))
+    return _exec('mkdocs', *args, '-f', str(paths.MKDOCS_YML))
 
 
 def build(_: argparse.Namespace) -> int:
-    return _mkdocs("build", "--strict")
+    return _mkdocs('build', '--strict')
 
 
 def serve(options: argparse.Namespace) -> int:
-    print(f"serving the textbook on http://{options.address} (Ctrl+C stops)", flush=True)
-    return _mkdocs("serve", "--strict", "--dev-addr", options.address)
+    print(f'serving the textbook on http://{options.address} (Ctrl+C stops)', flush=True)
+    return _mkdocs('serve', '--strict', '--dev-addr', options.address)
 
 
 def test(options: argparse.Namespace) -> int:
     # loadgroup: tests marked xdist_group("lessons") run in one worker, in order,
     # so the site build finds the lessons the lesson tests just executed.
-    return _exec("pytest", "-p", "textbook.pytest_plugin", "-n", str(options.workers),
-                 "--dist", "loadgroup", *options.pytest_args)
+    return _exec('pytest', '-p', 'textbook.pytest_plugin', '-n', str(options.workers),
+                 '--dist', 'loadgroup', *options.pytest_args)
 
 
 def check(_: argparse.Namespace) -> int:
@@ -56,44 +56,44 @@ def check(_: argparse.Namespace) -> int:
     except ValueError as error:
         print(error, file=sys.stderr)
         return 1
-    print(f"{len(lessons)} lesson(s) pass metadata, include and inline-code checks")
+    print(f'{len(lessons)} lesson(s) pass metadata, include and inline-code checks')
     return 0
 
 
 def lab(options: argparse.Namespace) -> int:
     # Built here, once, rather than by the first kernel while JupyterLab waits for it.
-    print("building the snippets workspace (when it changed) ...", flush=True)
+    print('building the snippets workspace (when it changed) ...', flush=True)
     workspace.ensure_built()
     print(f"JupyterLab on lessons/ at http://{options.address} with the book's kernel "
           f"(Ctrl+C stops)", flush=True)
-    return _exec("jupyterlab", *lab_arguments(options.address, browser=not options.no_browser,
+    return _exec('jupyterlab', *lab_arguments(options.address, browser=not options.no_browser,
                                               folder=write_settings()))
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m textbook", description=__doc__)
-    commands = parser.add_subparsers(dest="command", required=True)
-    building = commands.add_parser("build", help="build the site from executed lessons")
+    parser = argparse.ArgumentParser(prog='python -m textbook', description=__doc__)
+    commands = parser.add_subparsers(dest='command', required=True)
+    building = commands.add_parser('build', help='build the site from executed lessons')
     building.set_defaults(run=build)
-    serving = commands.add_parser("serve", help="build and serve the site, rebuild on changes")
-    serving.add_argument("--address", default="127.0.0.1:8000")
+    serving = commands.add_parser('serve', help='build and serve the site, rebuild on changes')
+    serving.add_argument('--address', default='127.0.0.1:8000')
     serving.set_defaults(run=serve)
-    testing = commands.add_parser("test", help="run the test suite")
-    testing.add_argument("--workers", "-n", default="2", help="pytest-xdist workers (default 2)")
+    testing = commands.add_parser('test', help='run the test suite')
+    testing.add_argument('--workers', '-n', default='2', help='pytest-xdist workers (default 2)')
     testing.set_defaults(run=test)
-    commands.add_parser("check", help="check lessons without executing them").set_defaults(
+    commands.add_parser('check', help='check lessons without executing them').set_defaults(
         run=check)
-    labbing = commands.add_parser("lab", help="JupyterLab on the lessons, in the book's kernel")
-    labbing.add_argument("--address", default="127.0.0.1:8888")
-    labbing.add_argument("--no-browser", action="store_true", help="do not open a browser")
+    labbing = commands.add_parser('lab', help="JupyterLab on the lessons, in the book's kernel")
+    labbing.add_argument('--address', default='127.0.0.1:8888')
+    labbing.add_argument('--no-browser', action='store_true', help='do not open a browser')
     labbing.set_defaults(run=lab)
     # Unknown arguments of `test` go to pytest, e.g. `python -m textbook test -k lessons`.
     options, extra = parser.parse_known_args(argv)
-    if extra and options.command != "test":
+    if extra and options.command != 'test':
         parser.error(f"unrecognized arguments: {' '.join(extra)}")
     options.pytest_args = extra
     return options.run(options)
 
 
-if __name__ == "__main__":
+if __name__ == '__main__':
     sys.exit(main())

@@ -26,18 +26,18 @@ from . import __version__, paths
 from .fingerprint import hash_paths, hash_text
 from .lessons import Lesson
 
-LESSON_CACHE = paths.CACHE / "lessons"
+LESSON_CACHE = paths.CACHE / 'lessons'
 # The parts of this package whose behaviour shows up in executed output.
-_EXECUTION_MODULES = ["environment.py", "execute.py", "includes.py", "isolation.py",
-                      "lessons.py", "workspace.py"]
+_EXECUTION_MODULES = ['environment.py', 'execute.py', 'includes.py', 'isolation.py',
+                      'lessons.py', 'workspace.py']
 
 
 def tools_fingerprint() -> str:
     """Changes when the machinery that runs lessons changes."""
     here = Path(__file__).parent
     sources = [here / name for name in _EXECUTION_MODULES]
-    sources += [paths.TOOLS / "labkit", paths.TOOLS / "cleanroom" / "src",
-                paths.ROOT / "requirements" / "lock.txt"]
+    sources += [paths.TOOLS / 'labkit', paths.TOOLS / 'cleanroom' / 'src',
+                paths.ROOT / 'requirements' / 'lock.txt']
     return hash_text(__version__, hash_paths(sources, base=paths.ROOT), ros_stack())
 
 
@@ -45,12 +45,12 @@ def ros_stack() -> str:
     """Which ROS 2 stack executes lessons: where ``ros2``, ``colcon`` and the
     launch and rclpy packages come from (the clean room in .venv, or a sourced
     ROS 2 installation), so switching stacks in one checkout re-executes."""
-    commands = [str(shutil.which(name, path=paths.tool_path())) for name in ("ros2", "colcon")]
+    commands = [str(shutil.which(name, path=paths.tool_path())) for name in ('ros2', 'colcon')]
     modules = []
-    for name in ("launch", "launch_ros", "rclpy"):
+    for name in ('launch', 'launch_ros', 'rclpy'):
         spec = importlib.util.find_spec(name)
         modules.append(str(spec.origin if spec else None))
-    return "\n".join([*commands, *modules, os.environ.get("AMENT_PREFIX_PATH", "")])
+    return '\n'.join([*commands, *modules, os.environ.get('AMENT_PREFIX_PATH', '')])
 
 
 def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]:
@@ -61,17 +61,17 @@ def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]
     lesson that builds the workspace itself.
     """
     root = root or paths.SNIPPETS
-    if re.search(r"\bcolcon\s+build\b", lesson.text):
+    if re.search(r'\bcolcon\s+build\b', lesson.text):
         return [root]
     packages = [p for p in sorted(root.iterdir()) if p.is_dir()
-                and re.search(rf"\b{re.escape(p.name)}\b", lesson.text)]
+                and re.search(rf'\b{re.escape(p.name)}\b', lesson.text)]
     return packages + [s.path for s in lesson.snippets]
 
 
 def code_text(lesson: Lesson) -> str:
     """What of the lesson is executed: each code cell's tags and source, in order."""
-    return "\n".join(f"{sorted(cell.metadata.get('tags', []))}\n{cell.source}"
-                     for cell in lesson.notebook.cells if cell.cell_type == "code")
+    return '\n'.join(f"{sorted(cell.metadata.get('tags', []))}\n{cell.source}"
+                     for cell in lesson.notebook.cells if cell.cell_type == 'code')
 
 
 def lesson_key(lesson: Lesson, root: Path | None = None) -> str:
@@ -85,34 +85,34 @@ def merge_outputs(lesson: Lesson, executed: nbformat.NotebookNode) -> nbformat.N
     """The lesson's current notebook (its prose as it is now) with the outputs of
     ``executed``, a run of the same code cells."""
     merged = copy.deepcopy(lesson.notebook)
-    ran = [cell for cell in executed.cells if cell.cell_type == "code"]
-    mine = [cell for cell in merged.cells if cell.cell_type == "code"]
+    ran = [cell for cell in executed.cells if cell.cell_type == 'code']
+    mine = [cell for cell in merged.cells if cell.cell_type == 'code']
     if [cell.source for cell in ran] != [cell.source for cell in mine]:
-        raise ValueError(f"{lesson.source}: the cached run is of other code cells")
+        raise ValueError(f'{lesson.source}: the cached run is of other code cells')
     for cell, result in zip(mine, ran, strict=True):
         cell.outputs = result.outputs
         cell.execution_count = result.execution_count
         cell.metadata = result.metadata
-    for key in ("language_info", "widgets"):
+    for key in ('language_info', 'widgets'):
         if key in executed.metadata:
             merged.metadata[key] = executed.metadata[key]
     return merged
 
 
 def cached(key: str) -> nbformat.NotebookNode | None:
-    path = LESSON_CACHE / f"{key}.ipynb"
+    path = LESSON_CACHE / f'{key}.ipynb'
     return nbformat.read(path, as_version=4) if path.exists() else None
 
 
 def store(key: str, notebook: nbformat.NotebookNode) -> Path:
-    return write_atomic(notebook, LESSON_CACHE / f"{key}.ipynb")
+    return write_atomic(notebook, LESSON_CACHE / f'{key}.ipynb')
 
 
 @contextmanager
 def exclusive(key: str) -> Iterator[None]:
     """Only one process executes a given lesson version; others wait, then hit the cache."""
     LESSON_CACHE.mkdir(parents=True, exist_ok=True)
-    with open(LESSON_CACHE / f"{key}.lock", "w") as handle:
+    with open(LESSON_CACHE / f'{key}.lock', 'w') as handle:
         fcntl.flock(handle, fcntl.LOCK_EX)
         yield
 
@@ -120,8 +120,8 @@ def exclusive(key: str) -> Iterator[None]:
 def write_atomic(notebook: nbformat.NotebookNode, target: Path) -> Path:
     """Write so that a reader never sees half a notebook (serve and tests run at once)."""
     target.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=target.parent, suffix=".tmp")
-    with os.fdopen(fd, "w") as handle:
+    fd, tmp = tempfile.mkstemp(dir=target.parent, suffix='.tmp')
+    with os.fdopen(fd, 'w') as handle:
         nbformat.write(notebook, handle)
     os.replace(tmp, target)
     return target

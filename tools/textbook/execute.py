@@ -30,23 +30,23 @@ from .isolation import acquire_domain
 from .lessons import Lesson, load
 
 #: labkit.exercises reads it (kept in step with labkit.exercises.APPLY_SOLUTIONS).
-APPLY_SOLUTIONS = "TEXTBOOK_APPLY_SOLUTIONS"
+APPLY_SOLUTIONS = 'TEXTBOOK_APPLY_SOLUTIONS'
 
 
 class NativeKernelManager(AsyncKernelManager):
     """Always the native kernel of this interpreter (the project's .venv), never a
     "python3" kernel that some other tool registered for the user."""
 
-    @default("transport")
+    @default('transport')
     def _transport_default(self) -> str:
-        return "ipc"  # unix sockets: the kernel is reachable from this machine only
+        return 'ipc'  # unix sockets: the kernel is reachable from this machine only
 
-    @default("ip")
+    @default('ip')
     def _ip_default(self) -> str:
         # An absolute socket path: the kernel runs in another working directory.
-        return os.path.join(tempfile.gettempdir(), f"textbook-kernel-{uuid.uuid4().hex[:12]}")
+        return os.path.join(tempfile.gettempdir(), f'textbook-kernel-{uuid.uuid4().hex[:12]}')
 
-    @default("kernel_spec_manager")
+    @default('kernel_spec_manager')
     def _kernel_spec_manager_default(self) -> KernelSpecManager:
         return KernelSpecManager(kernel_dirs=[])
 
@@ -67,27 +67,27 @@ def _cell_line(lesson: Lesson, cell: nbformat.NotebookNode) -> int | None:
 
 
 def _output_tail(cell: nbformat.NotebookNode, lines: int = 15) -> str:
-    text = "".join(out.get("text", "") for out in cell.get("outputs", [])
-                   if out.get("output_type") == "stream")
+    text = ''.join(out.get('text', '') for out in cell.get('outputs', [])
+                   if out.get('output_type') == 'stream')
     tail = text.rstrip().splitlines()[-lines:]
-    return "\n".join("    | " + line for line in tail)
+    return '\n'.join('    | ' + line for line in tail)
 
 
 def _failure(lesson: Lesson, notebook: nbformat.NotebookNode, index: int | None,
              error: str) -> LessonExecutionError:
     if index is None:
-        return LessonExecutionError(f"{lesson.source}: {error}")
+        return LessonExecutionError(f'{lesson.source}: {error}')
     cell = notebook.cells[index]
     line = _cell_line(lesson, cell)
-    where = f"{lesson.source}:{line}" if line else lesson.source
-    first = cell.source.strip().splitlines()[0] if cell.source.strip() else ""
-    message = f"{where}: cell {index + 1} ({first!r}) failed: {error}"
+    where = f'{lesson.source}:{line}' if line else lesson.source
+    first = cell.source.strip().splitlines()[0] if cell.source.strip() else ''
+    message = f'{where}: cell {index + 1} ({first!r}) failed: {error}'
     tail = _output_tail(cell)
-    return LessonExecutionError(message + ("\n  output before the error:\n" + tail if tail else ""))
+    return LessonExecutionError(message + ('\n  output before the error:\n' + tail if tail else ''))
 
 
 def _workdir(lesson: Lesson, token: str) -> Path:
-    return student_workspace(paths.RUNS / f"{lesson.path.stem}-{token}")
+    return student_workspace(paths.RUNS / f'{lesson.path.stem}-{token}')
 
 
 def student_workspace(folder: Path) -> Path:
@@ -99,10 +99,10 @@ def student_workspace(folder: Path) -> Path:
     folders, as in a student's workspace.  Shared by the book's build and the
     lab kernel (lab_kernel.py), so both run a lesson in the same place.
     """
-    (folder / "src").mkdir(parents=True)
-    for package in sorted(p.parent for p in paths.SNIPPETS.glob("*/package.xml")):
-        shutil.copytree(package, folder / "src" / package.name,
-                        ignore=shutil.ignore_patterns("__pycache__"))
+    (folder / 'src').mkdir(parents=True)
+    for package in sorted(p.parent for p in paths.SNIPPETS.glob('*/package.xml')):
+        shutil.copytree(package, folder / 'src' / package.name,
+                        ignore=shutil.ignore_patterns('__pycache__'))
     return folder
 
 
@@ -117,33 +117,33 @@ def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode
         env = ros_env(lease)
         # The book's build shows every solution passing its check: solution
         # cells apply the solution and a failing check fails the lesson.
-        env[APPLY_SOLUTIONS] = "1"
+        env[APPLY_SOLUTIONS] = '1'
         workdir = _workdir(lesson, lease.token)
-        current: dict[str, int | None] = {"index": None}
+        current: dict[str, int | None] = {'index': None}
         client = NotebookClient(
             notebook, kernel_manager_class=NativeKernelManager, timeout=timeout,
-            kernel_name="python3",
+            kernel_name='python3',
             allow_errors=False, coalesce_streams=True,
-            resources={"metadata": {"path": str(workdir)}},
+            resources={'metadata': {'path': str(workdir)}},
             on_cell_execute=lambda cell, cell_index: current.update(index=cell_index))
         try:
             client.execute(env=env)
         except CellTimeoutError:
-            raise _failure(lesson, notebook, current["index"],
-                           f"no result after {timeout} s (hung?)") from None
+            raise _failure(lesson, notebook, current['index'],
+                           f'no result after {timeout} s (hung?)') from None
         except CellExecutionError as error:
-            raise _failure(lesson, notebook, current["index"],
-                           f"{error.ename}: {error.evalue}") from None
+            raise _failure(lesson, notebook, current['index'],
+                           f'{error.ename}: {error.evalue}') from None
         except DeadKernelError as error:
-            raise _failure(lesson, notebook, current["index"],
-                           f"the kernel died: {error}") from None
+            raise _failure(lesson, notebook, current['index'],
+                           f'the kernel died: {error}') from None
         finally:
             leftovers = reaper.reap([lease.token])
             shutil.rmtree(workdir, ignore_errors=True)
         if leftovers:
             raise LessonExecutionError(
-                f"{lesson.source}: processes were still running after the last cell "
-                f"(stopped them; stop what a lesson starts):\n  " + "\n  ".join(leftovers))
+                f'{lesson.source}: processes were still running after the last cell '
+                f'(stopped them; stop what a lesson starts):\n  ' + '\n  '.join(leftovers))
     return notebook
 
 
@@ -195,7 +195,7 @@ def publish_all(lessons: list[Lesson], jobs: int | None = None) -> dict[str, Pat
                 failures.append(str(error))
     elif stale:
         # "spawn": the caller may be a threaded server; forking it is unsafe.
-        context = multiprocessing.get_context("spawn")
+        context = multiprocessing.get_context('spawn')
         with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
             futures = {lesson.source: pool.submit(_publish_path, str(lesson.path))
                        for lesson in stale}
@@ -205,5 +205,5 @@ def publish_all(lessons: list[Lesson], jobs: int | None = None) -> dict[str, Pat
                 except LessonExecutionError as error:
                     failures.append(str(error))
     if failures:
-        raise LessonExecutionError("\n".join(failures))
+        raise LessonExecutionError('\n'.join(failures))
     return results

@@ -5,8 +5,8 @@ import hashlib
 from collections.abc import Iterable
 from pathlib import Path
 
-_SKIP_PARTS = {"__pycache__", ".pytest_cache", ".ruff_cache"}
-_SKIP_SUFFIXES = (".pyc", ".pyo")
+_SKIP_PARTS = {'__pycache__', '.pytest_cache', '.ruff_cache'}
+_SKIP_SUFFIXES = ('.pyc', '.pyo')
 
 
 def tree_files(root: Path) -> list[Path]:
@@ -16,9 +16,9 @@ def tree_files(root: Path) -> list[Path]:
     if not root.is_dir():
         return []
     return sorted(
-        p for p in root.rglob("*")
+        p for p in root.rglob('*')
         if p.is_file() and not _SKIP_PARTS.intersection(p.parts)
-        and not p.name.endswith(_SKIP_SUFFIXES) and ".egg-info" not in str(p)
+        and not p.name.endswith(_SKIP_SUFFIXES) and '.egg-info' not in str(p)
     )
 
 
@@ -28,13 +28,13 @@ def hash_paths(paths: Iterable[Path], base: Path | None = None) -> str:
     for root in paths:
         for file in tree_files(Path(root)):
             name = file.relative_to(base) if base else file
-            digest.update(str(name).encode() + b"\0")
-            digest.update(file.read_bytes() + b"\0")
+            digest.update(str(name).encode() + b'\0')
+            digest.update(file.read_bytes() + b'\0')
     return digest.hexdigest()
 
 
 def hash_text(*parts: str) -> str:
     digest = hashlib.sha256()
     for part in parts:
-        digest.update(part.encode() + b"\0")
+        digest.update(part.encode() + b'\0')
     return digest.hexdigest()

@@ -17,12 +17,12 @@ from bs4 import BeautifulSoup, NavigableString
 
 from . import paths
 
-GLOSSARY = paths.DOCS / "glossary.md"
+GLOSSARY = paths.DOCS / 'glossary.md'
 _ENTRY = re.compile(r'^## (?P<title>.+?) \{#(?P<anchor>[a-z0-9-]+)'
                     r'(?: data-terms="(?P<terms>[^"]*)")?\}\s*$')
 #: Text inside these elements is never linked.
-_NOT_PROSE = {"code", "pre", "a", "h1", "h2", "h3", "h4", "h5", "h6", "summary",
-              "figcaption", "script", "style", "kbd"}
+_NOT_PROSE = {'code', 'pre', 'a', 'h1', 'h2', 'h3', 'h4', 'h5', 'h6', 'summary',
+              'figcaption', 'script', 'style', 'kbd'}
 
 
 class GlossaryError(ValueError):
@@ -42,16 +42,16 @@ def load(path: Path = GLOSSARY) -> list[Entry]:
     entries: list[Entry] = []
     lines = path.read_text().splitlines()
     for number, line in enumerate(lines, start=1):
-        if not line.startswith("## "):
+        if not line.startswith('## '):
             continue
         match = _ENTRY.match(line)
         if match is None:
-            raise GlossaryError(f"{paths.rel(path)}:{number}: a glossary entry is "
+            raise GlossaryError(f'{paths.rel(path)}:{number}: a glossary entry is '
                                 f'"## Title {{#anchor}}" or "## Title {{#anchor '
                                 f'data-terms="term|term"}}", got: {line}')
-        terms = match["terms"] or match["title"].lower()
-        entries.append(Entry(match["title"], match["anchor"],
-                             tuple(t.strip() for t in terms.split("|") if t.strip()),
+        terms = match['terms'] or match['title'].lower()
+        entries.append(Entry(match['title'], match['anchor'],
+                             tuple(t.strip() for t in terms.split('|') if t.strip()),
                              _definition(lines[number:])))
     return entries
 
@@ -60,19 +60,19 @@ def _definition(following: list[str]) -> str:
     """The first paragraph after a heading, as plain text (a link's tooltip)."""
     paragraph: list[str] = []
     for line in following:
-        if line.startswith("#") or (not line.strip() and paragraph):
+        if line.startswith('#') or (not line.strip() and paragraph):
             break
         if line.strip():
             paragraph.append(line.strip())
-    text = re.sub(r"\[([^\]]*)\]\([^)]*\)", r"\1", " ".join(paragraph))
-    return unescape(text.replace("`", "").replace("**", "").replace("*", ""))
+    text = re.sub(r'\[([^\]]*)\]\([^)]*\)', r'\1', ' '.join(paragraph))
+    return unescape(text.replace('`', '').replace('**', '').replace('*', ''))
 
 
 def _pattern(entries: list[Entry]) -> re.Pattern[str]:
     """All terms, longest first, so 'launch argument' wins over 'argument'."""
     terms = sorted({t for e in entries for t in e.terms}, key=len, reverse=True)
-    alternatives = "|".join(re.escape(t) for t in terms)
-    return re.compile(rf"(?<![\w/.-])({alternatives})(?![\w-]|\.\w)", re.IGNORECASE)
+    alternatives = '|'.join(re.escape(t) for t in terms)
+    return re.compile(rf'(?<![\w/.-])({alternatives})(?![\w-]|\.\w)', re.IGNORECASE)
 
 
 def _is_prose(node: NavigableString) -> bool:
@@ -80,7 +80,7 @@ def _is_prose(node: NavigableString) -> bool:
 
 
 def link_first_uses(soup: BeautifulSoup, entries: list[Entry], glossary_url: str,
-                    within: str = "div.jp-MarkdownCell div.jp-RenderedMarkdown") -> list[str]:
+                    within: str = 'div.jp-MarkdownCell div.jp-RenderedMarkdown') -> list[str]:
     """Link the first prose use of every term under ``within`` (markdown cells, never
     a cell's output, which stays as printed); returns the anchors linked."""
     if not entries:
@@ -106,9 +106,9 @@ def _link_in(soup: BeautifulSoup, node: NavigableString, pattern: re.Pattern[str
             continue
         linked.add(entry.anchor)
         pieces.append(text[start:match.start()])
-        link = soup.new_tag("a", attrs={"class": "glossary-term",
-                                        "href": f"{glossary_url}#{entry.anchor}",
-                                        "title": entry.definition})
+        link = soup.new_tag('a', attrs={'class': 'glossary-term',
+                                        'href': f'{glossary_url}#{entry.anchor}',
+                                        'title': entry.definition})
         link.string = match.group(1)
         pieces.append(link)
         start = match.end()

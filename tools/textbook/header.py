@@ -14,19 +14,19 @@ from .metadata import HARDWARE_TIERS
 
 def header_html(meta: dict[str, Any], prerequisites: list[tuple[str, str]]) -> str:
     """The header box; ``prerequisites`` are (title, url) of the lessons to read first."""
-    tier = meta["hardware_tier"]
+    tier = meta['hardware_tier']
     facts = (f'<span class="textbook-fact"><strong>Duration</strong> '
              f'{meta["duration_minutes"]} min</span> '
              f'<span class="textbook-fact"><strong>Level</strong> '
              f'{escape(meta["proficiency"])}</span> '
              f'<span class="textbook-fact"><strong>Hardware</strong> '
              f'tier {tier} ({escape(HARDWARE_TIERS[tier])})</span>')
-    objectives = "".join(f"<li>{escape(item)}</li>" for item in meta["learning_objectives"])
+    objectives = ''.join(f'<li>{escape(item)}</li>' for item in meta['learning_objectives'])
     if prerequisites:
-        before = ", ".join(f'<a href="{escape(url)}">{escape(title)}</a>'
+        before = ', '.join(f'<a href="{escape(url)}">{escape(title)}</a>'
                            for title, url in prerequisites)
     else:
-        before = "nothing: start here"
+        before = 'nothing: start here'
     return (f'<div class="admonition info textbook-header">'
             f'<p class="admonition-title">About this lesson</p>'
             f'<p class="textbook-facts">{facts}</p>'

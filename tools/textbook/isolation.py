@@ -21,15 +21,15 @@ import uuid
 from pathlib import Path
 
 DOMAIN_IDS = range(1, 90)
-LEASE_VAR = "TEXTBOOK_ROS_LEASE"
+LEASE_VAR = 'TEXTBOOK_ROS_LEASE'
 # Variables that would widen or change discovery; a run must not inherit them.
-_DISCOVERY_VARS = ("ROS_LOCALHOST_ONLY", "ROS_STATIC_PEERS", "ROS_DISCOVERY_SERVER",
-                   "FASTRTPS_DEFAULT_PROFILES_FILE", "FASTDDS_DEFAULT_PROFILES_FILE")
+_DISCOVERY_VARS = ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS', 'ROS_DISCOVERY_SERVER',
+                   'FASTRTPS_DEFAULT_PROFILES_FILE', 'FASTDDS_DEFAULT_PROFILES_FILE')
 
 
 def lock_dir() -> Path:
     """The shared lock folder, created on first use."""
-    path = Path(os.environ.get("TMPDIR") or tempfile.gettempdir()) / "ros2-textbook-domains"
+    path = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
     path.mkdir(parents=True, exist_ok=True)
     return path
 
@@ -39,14 +39,14 @@ class DomainLease:
 
     def __init__(self, domain_id: int, fd: int) -> None:
         self.domain_id = domain_id
-        self.token = f"{domain_id}-{os.getpid()}-{uuid.uuid4().hex[:12]}"
+        self.token = f'{domain_id}-{os.getpid()}-{uuid.uuid4().hex[:12]}'
         self._fd: int | None = fd
 
     def env(self) -> dict[str, str]:
         """The variables that put a process into this lease's private domain."""
         return {
-            "ROS_DOMAIN_ID": str(self.domain_id),
-            "ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST",
+            'ROS_DOMAIN_ID': str(self.domain_id),
+            'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
             LEASE_VAR: self.token,
         }
 
@@ -68,18 +68,18 @@ class DomainLease:
         self.release()
 
     def __repr__(self) -> str:
-        return f"DomainLease(domain_id={self.domain_id})"
+        return f'DomainLease(domain_id={self.domain_id})'
 
 
 def _try_lock(domain_id: int) -> int | None:
-    fd = os.open(lock_dir() / f"{domain_id}.lock", os.O_RDWR | os.O_CREAT, 0o666)
+    fd = os.open(lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
     try:
         fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
         os.close(fd)
         return None
     os.ftruncate(fd, 0)
-    os.write(fd, f"{os.getpid()}\n".encode())  # who holds it, for humans
+    os.write(fd, f'{os.getpid()}\n'.encode())  # who holds it, for humans
     return fd
 
 
@@ -93,6 +93,6 @@ def acquire_domain(timeout: float = 120.0) -> DomainLease:
                 return DomainLease(domain_id, fd)
         if time.monotonic() > deadline:
             raise RuntimeError(
-                f"no free ROS domain: IDs {DOMAIN_IDS.start}-{DOMAIN_IDS.stop - 1} are all "
-                f"locked in {lock_dir()} (too many runs on this machine?)")
+                f'no free ROS domain: IDs {DOMAIN_IDS.start}-{DOMAIN_IDS.stop - 1} are all '
+                f'locked in {lock_dir()} (too many runs on this machine?)')
         time.sleep(0.5)

@@ -9,8 +9,8 @@ from __future__ import annotations
 from markdown_it import MarkdownIt
 from mdit_py_plugins.front_matter import front_matter_plugin
 
-HEADING = "Key points"
-_PARSER = MarkdownIt("commonmark").use(front_matter_plugin)
+HEADING = 'Key points'
+_PARSER = MarkdownIt('commonmark').use(front_matter_plugin)
 
 
 class KeyPointsError(ValueError):
@@ -22,14 +22,14 @@ def sections(text: str) -> list[tuple[int, str]]:
     tokens = _PARSER.parse(text)
     return [(token.map[0] + 1, tokens[index + 1].content.strip())
             for index, token in enumerate(tokens)
-            if token.type == "heading_open" and token.tag == "h2" and token.map]
+            if token.type == 'heading_open' and token.tag == 'h2' and token.map]
 
 
 def check(text: str, source: str) -> None:
     """Raise naming file and line unless the last ``##`` section is Key points."""
     found = sections(text)
     if not found:
-        line = text.count("\n") + 1
+        line = text.count('\n') + 1
         raise KeyPointsError(f"{source}:{line}: the lesson has no '## {HEADING}' section; "
                              f"end it with one listing what the student should keep")
     line, title = found[-1]

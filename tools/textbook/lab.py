@@ -24,22 +24,22 @@ from . import paths
 from .lab_kernel import KERNEL_NAME
 
 #: The book lab's own configuration: settings/overrides.json and a server config.
-LAB = paths.BUILD / "lab"
+LAB = paths.BUILD / 'lab'
 OVERRIDES = {
-    "@jupyterlab/docmanager-extension:plugin": {
-        "defaultViewers": {"markdown": "Jupytext Notebook", "myst": "Jupytext Notebook"},
+    '@jupyterlab/docmanager-extension:plugin': {
+        'defaultViewers': {'markdown': 'Jupytext Notebook', 'myst': 'Jupytext Notebook'},
     },
 }
 
 
 #: The kernelspec every lesson's front matter names (the build ignores it).
-LESSON_KERNELSPEC = {"display_name": "Python 3", "language": "python", "name": "python3"}
-_KERNELSPEC_BLOCK = re.compile(r"^kernelspec:\n(?:[ \t]+.*\n)+", re.MULTILINE)
+LESSON_KERNELSPEC = {'display_name': 'Python 3', 'language': 'python', 'name': 'python3'}
+_KERNELSPEC_BLOCK = re.compile(r'^kernelspec:\n(?:[ \t]+.*\n)+', re.MULTILINE)
 
 
 def _split_front_matter(text: str) -> tuple[str, str] | None:
     """(front matter with its ``---`` lines, the rest), or None without one."""
-    end = text.find("\n---\n", 3) if text.startswith("---\n") else -1
+    end = text.find('\n---\n', 3) if text.startswith('---\n') else -1
     return (text[:end + 5], text[end + 5:]) if end >= 0 else None
 
 
@@ -52,26 +52,26 @@ def keep_lesson_front_matter(model: dict, path: str, contents_manager: object = 
     own front matter is kept and only the cells are saved.  A new text
     notebook, or an .ipynb, gets the lessons' kernelspec instead of the book's.
     """
-    if model.get("type") == "notebook":  # an .ipynb
-        spec = model["content"].get("metadata", {}).get("kernelspec", {})
-        if spec.get("name") == KERNEL_NAME:
-            model["content"]["metadata"]["kernelspec"] = dict(LESSON_KERNELSPEC)
+    if model.get('type') == 'notebook':  # an .ipynb
+        spec = model['content'].get('metadata', {}).get('kernelspec', {})
+        if spec.get('name') == KERNEL_NAME:
+            model['content']['metadata']['kernelspec'] = dict(LESSON_KERNELSPEC)
         return
-    text = model.get("content")
+    text = model.get('content')
     parts = _split_front_matter(text) if isinstance(text, str) else None
-    if model.get("type") != "file" or parts is None:
+    if model.get('type') != 'file' or parts is None:
         return
     header, body = parts
-    on_disk = Path(getattr(contents_manager, "root_dir", "")) / path
+    on_disk = Path(getattr(contents_manager, 'root_dir', '')) / path
     old = _split_front_matter(on_disk.read_text()) if on_disk.is_file() else None
     if old is not None:
-        model["content"] = old[0] + body
+        model['content'] = old[0] + body
         return
     block = _KERNELSPEC_BLOCK.search(header)
-    if block and f"name: {KERNEL_NAME}" in block.group(0):
-        lesson_block = "kernelspec:\n" + "".join(
-            f"  {key}: {value}\n" for key, value in LESSON_KERNELSPEC.items())
-        model["content"] = header[:block.start()] + lesson_block + header[block.end():] + body
+    if block and f'name: {KERNEL_NAME}' in block.group(0):
+        lesson_block = 'kernelspec:\n' + ''.join(
+            f'  {key}: {value}\n' for key, value in LESSON_KERNELSPEC.items())
+        model['content'] = header[:block.start()] + lesson_block + header[block.end():] + body
 
 
 # A callable, not its import string: jupyter_server's validator of the string
@@ -86,28 +86,28 @@ c.ContentsManager.pre_save_hook = keep_lesson_front_matter
 
 def write_settings(folder: Path = LAB) -> Path:
     """Write the lab's settings overrides and server config into ``folder``; returns it."""
-    (folder / "settings").mkdir(parents=True, exist_ok=True)
-    (folder / "settings" / "overrides.json").write_text(json.dumps(OVERRIDES, indent=2) + "\n")
-    (folder / "jupyter_lab_config.py").write_text(SERVER_CONFIG)
+    (folder / 'settings').mkdir(parents=True, exist_ok=True)
+    (folder / 'settings' / 'overrides.json').write_text(json.dumps(OVERRIDES, indent=2) + '\n')
+    (folder / 'jupyter_lab_config.py').write_text(SERVER_CONFIG)
     return folder
 
 
-def lab_arguments(address: str = "127.0.0.1:8888", browser: bool = True,
+def lab_arguments(address: str = '127.0.0.1:8888', browser: bool = True,
                   folder: Path = LAB, root: Path = paths.LESSONS) -> list[str]:
     """Arguments of ``python -m jupyterlab`` for the book's lab on ``root``, with the
     configuration :func:`write_settings` wrote into ``folder``."""
-    host, _, port = address.rpartition(":")
+    host, _, port = address.rpartition(':')
     arguments = [
         f"--config={folder / 'jupyter_lab_config.py'}",
-        f"--ServerApp.root_dir={root}",
+        f'--ServerApp.root_dir={root}',
         f"--ServerApp.ip={host or '127.0.0.1'}",
         f"--ServerApp.port={port or '8888'}",
         f"--LabApp.app_settings_dir={folder / 'settings'}",
-        f"--KernelSpecManager.allowed_kernelspecs={KERNEL_NAME}",
-        f"--MappingKernelManager.default_kernel_name={KERNEL_NAME}",
+        f'--KernelSpecManager.allowed_kernelspecs={KERNEL_NAME}',
+        f'--MappingKernelManager.default_kernel_name={KERNEL_NAME}',
     ]
     if not browser:
-        arguments.append("--no-browser")
-    if hasattr(os, "geteuid") and os.geteuid() == 0:
-        arguments.append("--allow-root")  # containers often run as root
+        arguments.append('--no-browser')
+    if hasattr(os, 'geteuid') and os.geteuid() == 0:
+        arguments.append('--allow-root')  # containers often run as root
     return arguments

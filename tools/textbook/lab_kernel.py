@@ -28,27 +28,27 @@ from .environment import ros_env
 from .execute import student_workspace
 from .isolation import acquire_domain
 
-KERNEL_NAME = "ros2-launch-textbook"
-DISPLAY_NAME = "ROS 2 launch textbook (Jazzy)"
+KERNEL_NAME = 'ros2-launch-textbook'
+DISPLAY_NAME = 'ROS 2 launch textbook (Jazzy)'
 
 
 def kernel_spec() -> dict:
     """The kernel.json of the book's kernel, for this interpreter."""
     return {
-        "argv": [sys.executable, "-m", "textbook.lab_kernel", "-f", "{connection_file}"],
-        "display_name": DISPLAY_NAME,
-        "language": "python",
+        'argv': [sys.executable, '-m', 'textbook.lab_kernel', '-f', '{connection_file}'],
+        'display_name': DISPLAY_NAME,
+        'language': 'python',
         # An interrupt travels as a message to ipykernel: a signal to the
         # launcher's process group would reach the launcher too.
-        "interrupt_mode": "message",
-        "metadata": {"debugger": True},
+        'interrupt_mode': 'message',
+        'metadata': {'debugger': True},
     }
 
 
 def install_kernel_spec(prefix: str = sys.prefix) -> Path:
     """Install the kernel spec under ``prefix`` (default: this environment); returns its folder."""
     with tempfile.TemporaryDirectory() as folder:
-        (Path(folder) / "kernel.json").write_text(json.dumps(kernel_spec(), indent=1) + "\n")
+        (Path(folder) / 'kernel.json').write_text(json.dumps(kernel_spec(), indent=1) + '\n')
         target = KernelSpecManager().install_kernel_spec(
             folder, kernel_name=KERNEL_NAME, prefix=prefix)
     return Path(target)
@@ -58,9 +58,9 @@ def run_kernel(connection_file: str) -> int:
     """Run ipykernel for ``connection_file`` in the book's environment; its exit code."""
     with acquire_domain() as lease:
         env = ros_env(lease)
-        workdir = student_workspace(paths.RUNS / f"lab-{lease.token}")
+        workdir = student_workspace(paths.RUNS / f'lab-{lease.token}')
         kernel = subprocess.Popen(
-            [sys.executable, "-m", "ipykernel_launcher", "-f", connection_file],
+            [sys.executable, '-m', 'ipykernel_launcher', '-f', connection_file],
             env=env, cwd=workdir)
         # Jupyter stops a kernel with SIGTERM (after a shutdown request);
         # pass it on.  SIGINT reaches ipykernel itself (message interrupts,
@@ -75,25 +75,25 @@ def run_kernel(connection_file: str) -> int:
                 kernel.wait()
             leftovers = reaper.reap([lease.token])
             if leftovers:
-                print("lab kernel: stopped processes still running at the end:\n  "
-                      + "\n  ".join(leftovers), file=sys.stderr)
+                print('lab kernel: stopped processes still running at the end:\n  '
+                      + '\n  '.join(leftovers), file=sys.stderr)
             shutil.rmtree(workdir, ignore_errors=True)
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m textbook.lab_kernel", description=__doc__,
+    parser = argparse.ArgumentParser(prog='python -m textbook.lab_kernel', description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("-f", dest="connection_file", help="the kernel's connection file")
-    parser.add_argument("--install", action="store_true",
-                        help=f"install the kernel spec {KERNEL_NAME!r} into {sys.prefix}")
+    parser.add_argument('-f', dest='connection_file', help="the kernel's connection file")
+    parser.add_argument('--install', action='store_true',
+                        help=f'install the kernel spec {KERNEL_NAME!r} into {sys.prefix}')
     options = parser.parse_args(argv)
     if options.install:
         print(install_kernel_spec())
         return 0
     if not options.connection_file:
-        parser.error("-f CONNECTION_FILE is required (Jupyter passes it)")
+        parser.error('-f CONNECTION_FILE is required (Jupyter passes it)')
     return run_kernel(options.connection_file)
 
 
-if __name__ == "__main__":
+if __name__ == '__main__':
     sys.exit(main())

@@ -32,11 +32,11 @@ class Lesson:
 
     @property
     def id(self) -> str:
-        return self.meta["id"]
+        return self.meta['id']
 
     @property
     def title(self) -> str:
-        return self.meta["title"]
+        return self.meta['title']
 
     @property
     def site_path(self) -> str:
@@ -48,8 +48,8 @@ def discover(root: Path = paths.LESSONS) -> list[Path]:
     """Every lesson file, in reading order (chapter, layer, file name)."""
     if not root.is_dir():
         return []
-    return sorted(p for p in root.rglob("*.md")
-                  if p.name.lower() != "readme.md" and not p.name.startswith(("_", ".")))
+    return sorted(p for p in root.rglob('*.md')
+                  if p.name.lower() != 'readme.md' and not p.name.startswith(('_', '.')))
 
 
 def load(path: Path) -> Lesson:
@@ -59,15 +59,15 @@ def load(path: Path) -> Lesson:
     text = path.read_text()
     inline_check.check(text, source)
     expanded, used = expand(text, source)
-    notebook = jupytext.reads(expanded, fmt="md:myst")
-    meta = metadata.validate(notebook.metadata.get("textbook"), source)
+    notebook = jupytext.reads(expanded, fmt='md:myst')
+    meta = metadata.validate(notebook.metadata.get('textbook'), source)
     metadata.check_location(meta, path, source)
     keypoints.check(text, source)
-    notebook.metadata["kernelspec"] = {"name": "python3", "display_name": "Python 3",
-                                       "language": "python"}
-    notebook.metadata.pop("jupytext", None)
+    notebook.metadata['kernelspec'] = {'name': 'python3', 'display_name': 'Python 3',
+                                       'language': 'python'}
+    notebook.metadata.pop('jupytext', None)
     for index, cell in enumerate(notebook.cells):  # the same lesson, the same notebook
-        cell.id = f"cell-{index}"
+        cell.id = f'cell-{index}'
     return Lesson(path, text, meta, notebook, used)
 
 
@@ -80,7 +80,7 @@ def load_all(root: Path = paths.LESSONS) -> list[Lesson]:
         except ValueError as error:
             problems.append(str(error))
     if problems:
-        raise LessonError("\n".join(problems))
+        raise LessonError('\n'.join(problems))
     metadata.check_collection({lesson.source: lesson.meta for lesson in lessons})
     return lessons
 

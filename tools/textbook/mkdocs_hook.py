@@ -36,8 +36,8 @@ from textbook.page_toc import toc_tokens
 from textbook.render import LessonPage, finish_lesson_html, images_without_description
 from textbook.workspace import WorkspaceBuildError, ensure_built
 
-log = logging.getLogger("mkdocs.hooks.textbook")
-GLOSSARY_PAGE = "glossary.md"
+log = logging.getLogger('mkdocs.hooks.textbook')
+GLOSSARY_PAGE = 'glossary.md'
 _lessons: list[Lesson] = []
 _glossary: list[glossary.Entry] = []
 
@@ -48,17 +48,17 @@ def on_config(config):
         _lessons = load_all()
         _glossary = glossary.load()
     except ValueError as error:
-        raise PluginError(f"lesson check failed:\n{error}") from None
-    config["nav"] = build_nav(_lessons, glossary=GLOSSARY_PAGE, reference=reference_pages())
+        raise PluginError(f'lesson check failed:\n{error}') from None
+    config['nav'] = build_nav(_lessons, glossary=GLOSSARY_PAGE, reference=reference_pages())
     return config
 
 
 def reference_pages(docs: Path = paths.DOCS) -> list[tuple[str, str]]:
     """(title, page) of every docs/reference/ page, titled by its first heading."""
     pages = []
-    for path in sorted((docs / "reference").glob("*.md")):
+    for path in sorted((docs / 'reference').glob('*.md')):
         heading = next((line[2:].strip() for line in path.read_text().splitlines()
-                        if line.startswith("# ")), path.stem)
+                        if line.startswith('# ')), path.stem)
         pages.append((heading, path.relative_to(docs).as_posix()))
     return pages
 
@@ -69,12 +69,12 @@ def on_files(files: Files, config) -> Files:
         ensure_built()
         published = publish_all(_lessons)
     except (LessonExecutionError, WorkspaceBuildError) as error:
-        raise PluginError(f"lesson execution failed:\n{error}") from None
+        raise PluginError(f'lesson execution failed:\n{error}') from None
     for lesson in _lessons:
-        log.info("lesson %s -> %s", lesson.source, paths.rel(published[lesson.source]))
+        log.info('lesson %s -> %s', lesson.source, paths.rel(published[lesson.source]))
         files.append(File(lesson.site_path, src_dir=str(paths.NOTEBOOKS),
-                          dest_dir=config["site_dir"],
-                          use_directory_urls=config["use_directory_urls"]))
+                          dest_dir=config['site_dir'],
+                          use_directory_urls=config['use_directory_urls']))
     for site_path, markdown in part_pages(_lessons).items():
         files.append(File.generated(config, site_path, content=markdown))
     return files
@@ -94,28 +94,28 @@ def on_page_content(html: str, page, config, files) -> str:
         return html
     by_id = {other.id: other for other in _lessons}
     prerequisites = [(by_id[prereq].title, _url_from(page, files, by_id[prereq].site_path))
-                     for prereq in lesson.meta["prerequisites"]]
+                     for prereq in lesson.meta['prerequisites']]
     finished = finish_lesson_html(html, LessonPage(
         header=header_html(lesson.meta, prerequisites), glossary=_glossary,
         glossary_url=_url_from(page, files, GLOSSARY_PAGE)))
-    soup = BeautifulSoup(finished, "html.parser")
+    soup = BeautifulSoup(finished, 'html.parser')
     missing = images_without_description(soup)
     if missing:
-        raise PluginError(f"{lesson.source}: {len(missing)} picture(s) without a description "
-                          f"(alt text); draw graphs with labkit.draw_graph, which adds one")
+        raise PluginError(f'{lesson.source}: {len(missing)} picture(s) without a description '
+                          f'(alt text); draw graphs with labkit.draw_graph, which adds one')
     page.toc = get_toc(toc_tokens(soup))
     return finished
 
 
 def on_page_context(context, page, config, nav):
     lesson = _lesson_of(page)
-    if lesson is not None and config.get("repo_url") and config.get("edit_uri"):
-        page.edit_url = source_edit_url(config["repo_url"], config["edit_uri"], lesson.source)
+    if lesson is not None and config.get('repo_url') and config.get('edit_uri'):
+        page.edit_url = source_edit_url(config['repo_url'], config['edit_uri'], lesson.source)
     return context
 
 
 def source_edit_url(repo_url: str, edit_uri: str, source: str) -> str:
     """The edit link of a repository file: ``edit_uri`` names docs/, so the
     repository root is one folder up (``edit/main/docs/`` -> ``edit/main/``)."""
-    root = edit_uri.strip("/").rsplit("/", 1)[0]
+    root = edit_uri.strip('/').rsplit('/', 1)[0]
     return f"{repo_url.rstrip('/')}/{root}/{source}"

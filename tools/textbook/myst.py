@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from markdown_it import MarkdownIt
 from mdit_py_plugins.front_matter import front_matter_plugin
 
-_PARSER = MarkdownIt("commonmark").use(front_matter_plugin)
+_PARSER = MarkdownIt('commonmark').use(front_matter_plugin)
 
 
 @dataclass(frozen=True)
@@ -26,15 +26,15 @@ class Fence:
     @property
     def directive(self) -> str | None:
         """``snippet`` for ```{snippet}, ``code-cell`` for ```{code-cell}, else None."""
-        head = self.info.split(None, 1)[0] if self.info.strip() else ""
-        if head.startswith("{") and head.endswith("}"):
+        head = self.info.split(None, 1)[0] if self.info.strip() else ''
+        if head.startswith('{') and head.endswith('}'):
             return head[1:-1]
         return None
 
     @property
     def argument(self) -> str:
         parts = self.info.split(None, 1)
-        return parts[1].strip() if len(parts) > 1 else ""
+        return parts[1].strip() if len(parts) > 1 else ''
 
     @property
     def first_content_line(self) -> int:
@@ -45,4 +45,4 @@ class Fence:
 def fences(text: str) -> list[Fence]:
     """All top-level and nested fenced blocks of ``text``, in order."""
     return [Fence(tok.info, tok.content, tok.map[0], tok.map[1], tok.markup)
-            for tok in _PARSER.parse(text) if tok.type == "fence" and tok.map]
+            for tok in _PARSER.parse(text) if tok.type == 'fence' and tok.map]

@@ -11,7 +11,7 @@ from typing import Any
 
 from bs4 import BeautifulSoup
 
-HEADINGS = ["h1", "h2", "h3"]
+HEADINGS = ['h1', 'h2', 'h3']
 
 
 def toc_tokens(soup: BeautifulSoup) -> list[dict[str, Any]]:
@@ -19,15 +19,15 @@ def toc_tokens(soup: BeautifulSoup) -> list[dict[str, Any]]:
     roots: list[dict[str, Any]] = []
     stack: list[dict[str, Any]] = []
     for heading in soup.find_all(HEADINGS):
-        if not heading.get("id"):
+        if not heading.get('id'):
             continue
-        title = BeautifulSoup(str(heading), "html.parser").find(heading.name)
-        for anchor in title.select("a.anchor-link, a.headerlink"):
+        title = BeautifulSoup(str(heading), 'html.parser').find(heading.name)
+        for anchor in title.select('a.anchor-link, a.headerlink'):
             anchor.decompose()
-        token = {"level": int(heading.name[1]), "id": heading["id"],
-                 "name": title.decode_contents().strip(), "children": []}
-        while stack and stack[-1]["level"] >= token["level"]:
+        token = {'level': int(heading.name[1]), 'id': heading['id'],
+                 'name': title.decode_contents().strip(), 'children': []}
+        while stack and stack[-1]['level'] >= token['level']:
             stack.pop()
-        (stack[-1]["children"] if stack else roots).append(token)
+        (stack[-1]['children'] if stack else roots).append(token)
         stack.append(token)
     return roots

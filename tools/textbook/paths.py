@@ -7,16 +7,16 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-SNIPPETS = ROOT / "snippets"
-LESSONS = ROOT / "lessons"
-DOCS = ROOT / "docs"
-BUILD = ROOT / "build"
-WORKSPACE = BUILD / "ws"
-NOTEBOOKS = BUILD / "notebooks"
-CACHE = BUILD / "cache"
-RUNS = BUILD / "run"
-TOOLS = ROOT / "tools"
-MKDOCS_YML = ROOT / "mkdocs.yml"
+SNIPPETS = ROOT / 'snippets'
+LESSONS = ROOT / 'lessons'
+DOCS = ROOT / 'docs'
+BUILD = ROOT / 'build'
+WORKSPACE = BUILD / 'ws'
+NOTEBOOKS = BUILD / 'notebooks'
+CACHE = BUILD / 'cache'
+RUNS = BUILD / 'run'
+TOOLS = ROOT / 'tools'
+MKDOCS_YML = ROOT / 'mkdocs.yml'
 
 # The interpreter of the project environment; its bin/ holds colcon, ros2,
 # mkdocs and pytest, so it goes first on PATH for everything we start.
@@ -25,8 +25,8 @@ VENV_BIN = Path(sys.executable).parent
 
 def tool_path(path: str | None = None) -> str:
     """``PATH`` with the project environment's bin/ first (``path``: the PATH to extend)."""
-    rest = os.environ.get("PATH", "") if path is None else path
-    return f"{VENV_BIN}{os.pathsep}{rest}"
+    rest = os.environ.get('PATH', '') if path is None else path
+    return f'{VENV_BIN}{os.pathsep}{rest}'
 
 
 def executable(name: str) -> str:
@@ -34,8 +34,8 @@ def executable(name: str) -> str:
     PATH (with ROS 2 sourced, ``colcon`` or ``ros2`` may come from there only)."""
     found = shutil.which(name, path=tool_path())
     if found is None:
-        raise FileNotFoundError(f"{name}: not found in {VENV_BIN} or on PATH; "
-                                f"run `make setup` (or source your ROS 2 installation)")
+        raise FileNotFoundError(f'{name}: not found in {VENV_BIN} or on PATH; '
+                                f'run `make setup` (or source your ROS 2 installation)')
     return found
 
 

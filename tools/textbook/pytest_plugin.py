@@ -20,8 +20,8 @@ _lease: DomainLease | None = None
 
 
 def _is_xdist_controller(config: pytest.Config) -> bool:
-    workers = getattr(config.option, "numprocesses", None)
-    return bool(workers) and not hasattr(config, "workerinput")
+    workers = getattr(config.option, 'numprocesses', None)
+    return bool(workers) and not hasattr(config, 'workerinput')
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -30,7 +30,7 @@ def pytest_configure(config: pytest.Config) -> None:
         return  # the controller runs no tests; its workers lease their own domains
     _lease = acquire_domain()
     os.environ.update(_lease.env())
-    os.environ.pop("ROS_LOCALHOST_ONLY", None)
+    os.environ.pop('ROS_LOCALHOST_ONLY', None)
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
@@ -42,18 +42,18 @@ def pytest_unconfigure(config: pytest.Config) -> None:
 
 def pytest_report_header(config: pytest.Config) -> str | None:
     if _lease is None:
-        return "ROS isolation: each worker leases its own ROS_DOMAIN_ID (1-89), LOCALHOST"
-    return f"ROS isolation: ROS_DOMAIN_ID={_lease.domain_id}, LOCALHOST discovery"
+        return 'ROS isolation: each worker leases its own ROS_DOMAIN_ID (1-89), LOCALHOST'
+    return f'ROS isolation: ROS_DOMAIN_ID={_lease.domain_id}, LOCALHOST discovery'
 
 
-@pytest.fixture(scope="session")
+@pytest.fixture(scope='session')
 def session_lease() -> DomainLease:
     """The domain lease of this test process (its env is already in os.environ)."""
-    assert _lease is not None, "textbook.pytest_plugin did not lease a domain"
+    assert _lease is not None, 'textbook.pytest_plugin did not lease a domain'
     return _lease
 
 
-@pytest.fixture(scope="session", autouse=True)
+@pytest.fixture(scope='session', autouse=True)
 def no_leftover_ros_processes():
     """Fail the session when a test left a process running (it is killed first)."""
     yield
@@ -61,5 +61,5 @@ def no_leftover_ros_processes():
         return
     leftovers = reaper.reap([_lease.token], grace=3.0)
     if leftovers:
-        pytest.fail("processes started by the tests were still running at the end of the "
-                    "session (now killed):\n  " + "\n  ".join(leftovers), pytrace=False)
+        pytest.fail('processes started by the tests were still running at the end of the '
+                    'session (now killed):\n  ' + '\n  '.join(leftovers), pytrace=False)

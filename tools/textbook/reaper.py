@@ -40,7 +40,7 @@ def describe(proc: psutil.Process) -> str:
     try:
         return f"pid {proc.pid}: {' '.join(proc.cmdline()) or proc.name()}"
     except psutil.Error:
-        return f"pid {proc.pid}"
+        return f'pid {proc.pid}'
 
 
 def reap(tokens: Iterable[str], grace: float = 5.0) -> list[str]:

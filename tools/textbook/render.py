@@ -21,7 +21,7 @@ from .keypoints import HEADING as KEY_POINTS
 _TITLE = re.compile(
     r'<div class="snippet-title">(?P<title>[^<]*)</div>\s*<div class="highlight">')
 
-FOLDED_TAGS = {"solution": ("Solution", "success"), "hint": ("Hint", "tip")}
+FOLDED_TAGS = {'solution': ('Solution', 'success'), 'hint': ('Hint', 'tip')}
 
 
 def title_snippets(html: str) -> str:
@@ -34,32 +34,32 @@ def _fold_tag(cell, tags=FOLDED_TAGS) -> str | None:
     """The folding tag of a rendered cell: nbconvert puts ``celltag_<tag>`` on the
     cell's div (code cells) or on the rendered markdown inside it."""
     for tag in tags:
-        marker = f"celltag_{tag}"
-        if marker in (cell.get("class") or []) or cell.select_one(f".{marker}") is not None:
+        marker = f'celltag_{tag}'
+        if marker in (cell.get('class') or []) or cell.select_one(f'.{marker}') is not None:
             return tag
     return None
 
 
 def fold_tagged_cells(html: str) -> str:
     """Wrap each run of consecutive cells tagged solution/hint in a closed <details>."""
-    if "celltag_" not in html:
+    if 'celltag_' not in html:
         return html
-    soup = BeautifulSoup(html, "html.parser")
-    cells = [cell for cell in soup.select("div.jp-Cell")
-             if cell.find_parent("div", class_="jp-Cell") is None]
+    soup = BeautifulSoup(html, 'html.parser')
+    cells = [cell for cell in soup.select('div.jp-Cell')
+             if cell.find_parent('div', class_='jp-Cell') is None]
     folded: set[int] = set()
     for cell in cells:
         tag = _fold_tag(cell)
         if tag is None or id(cell) in folded:
             continue
         label, kind = FOLDED_TAGS[tag]
-        details = soup.new_tag("details", attrs={"class": f"{kind} textbook-{tag}"})
-        summary = soup.new_tag("summary")
+        details = soup.new_tag('details', attrs={'class': f'{kind} textbook-{tag}'})
+        summary = soup.new_tag('summary')
         summary.string = label
         details.append(summary)
         cell.insert_before(details)
         run, sibling = [cell], cell.find_next_sibling()
-        while sibling is not None and "jp-Cell" in (sibling.get("class") or []) \
+        while sibling is not None and 'jp-Cell' in (sibling.get('class') or []) \
                 and _fold_tag(sibling) == tag:
             run.append(sibling)
             sibling = sibling.find_next_sibling()
@@ -73,38 +73,38 @@ def fold_tagged_cells(html: str) -> str:
 class LessonPage:
     """What the build adds to one lesson page."""
 
-    header: str = ""
+    header: str = ''
     glossary: list[Entry] = field(default_factory=list)
-    glossary_url: str = ""
+    glossary_url: str = ''
 
 
 def _top_cell(element):
     """The notebook cell (outermost ``div.jp-Cell``) holding ``element``."""
     cells = [parent for parent in element.parents
-             if parent.name == "div" and "jp-Cell" in (parent.get("class") or [])]
+             if parent.name == 'div' and 'jp-Cell' in (parent.get('class') or [])]
     return cells[-1] if cells else None
 
 
 def add_header(soup: BeautifulSoup, header: str) -> None:
     """Put the header box right under the page title (the first h1)."""
-    title = soup.find("h1")
+    title = soup.find('h1')
     if title is not None and header:
-        title.insert_after(BeautifulSoup(header, "html.parser"))
+        title.insert_after(BeautifulSoup(header, 'html.parser'))
 
 
 def _heading_text(heading) -> str:
-    return heading.get_text().replace("\u00b6", "").strip()
+    return heading.get_text().replace('\u00b6', '').strip()
 
 
 def box_key_points(soup: BeautifulSoup) -> bool:
     """Wrap the last Key points section (its cell and every cell after it) in a box."""
-    headings = [h for h in soup.find_all("h2") if _heading_text(h) == KEY_POINTS]
+    headings = [h for h in soup.find_all('h2') if _heading_text(h) == KEY_POINTS]
     if not headings:
         return False
     first = _top_cell(headings[-1])
     if first is None:
         return False
-    box = soup.new_tag("div", attrs={"class": "admonition abstract textbook-key-points"})
+    box = soup.new_tag('div', attrs={'class': 'admonition abstract textbook-key-points'})
     first.insert_before(box)
     cell = first
     while cell is not None:
@@ -120,7 +120,7 @@ def finish_lesson_html(html: str, page: LessonPage | None = None) -> str:
     html = fold_tagged_cells(title_snippets(html))
     if page is None:
         return html
-    soup = BeautifulSoup(html, "html.parser")
+    soup = BeautifulSoup(html, 'html.parser')
     link_first_uses(soup, page.glossary, page.glossary_url)  # prose only, not the header
     add_header(soup, page.header)
     box_key_points(soup)
@@ -128,10 +128,10 @@ def finish_lesson_html(html: str, page: LessonPage | None = None) -> str:
 
 
 #: What nbconvert writes when an image output has no ``alt`` metadata.
-NO_DESCRIPTION = "No description has been provided for this image"
+NO_DESCRIPTION = 'No description has been provided for this image'
 
 
 def images_without_description(soup: BeautifulSoup) -> list:
     """Images a screen reader could say nothing about."""
-    return [image for image in soup.find_all("img")
-            if not (image.get("alt") or "").strip() or image.get("alt") == NO_DESCRIPTION]
+    return [image for image in soup.find_all('img')
+            if not (image.get('alt') or '').strip() or image.get('alt') == NO_DESCRIPTION]

@@ -22,23 +22,23 @@ class Settings:
 def _value(name: str, raw: object, default: object) -> object:
     if isinstance(default, bool):
         text = str(raw).strip().lower()
-        if text not in ("1", "0", "true", "false"):
-            raise ValueError(f"{name}: expected true or false, got {raw!r}")
-        return text in ("1", "true")
+        if text not in ('1', '0', 'true', 'false'):
+            raise ValueError(f'{name}: expected true or false, got {raw!r}')
+        return text in ('1', 'true')
     try:
         value = int(raw)
     except (TypeError, ValueError):
-        raise ValueError(f"{name}: expected a whole number, got {raw!r}") from None
+        raise ValueError(f'{name}: expected a whole number, got {raw!r}') from None
     if value < 1:
-        raise ValueError(f"{name}: expected at least 1, got {value}")
+        raise ValueError(f'{name}: expected at least 1, got {value}')
     return value
 
 
 def load(pyproject: os.PathLike | None = None, environ: dict[str, str] | None = None) -> Settings:
     """The settings: defaults, then pyproject.toml, then TEXTBOOK_* variables."""
-    path = paths.ROOT / "pyproject.toml" if pyproject is None else pyproject
-    with open(path, "rb") as handle:
-        table = tomllib.load(handle).get("tool", {}).get("textbook", {})
+    path = paths.ROOT / 'pyproject.toml' if pyproject is None else pyproject
+    with open(path, 'rb') as handle:
+        table = tomllib.load(handle).get('tool', {}).get('textbook', {})
     environ = os.environ if environ is None else environ
     known = {field.name: field.default for field in fields(Settings)}
     unknown = set(table) - set(known)
@@ -47,7 +47,7 @@ def load(pyproject: os.PathLike | None = None, environ: dict[str, str] | None = 
                          f"{', '.join(sorted(unknown))}; known: {', '.join(known)}")
     values = {}
     for name, default in known.items():
-        raw = environ.get(f"TEXTBOOK_{name.upper()}", table.get(name, default))
-        values[name] = _value(f"TEXTBOOK_{name.upper()}" if f"TEXTBOOK_{name.upper()}" in environ
-                              else f"{path} [tool.textbook] {name}", raw, default)
+        raw = environ.get(f'TEXTBOOK_{name.upper()}', table.get(name, default))
+        values[name] = _value(f'TEXTBOOK_{name.upper()}' if f'TEXTBOOK_{name.upper()}' in environ
+                              else f'{path} [tool.textbook] {name}', raw, default)
     return Settings(**values)

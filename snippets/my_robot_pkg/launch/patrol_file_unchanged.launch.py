@@ -20,7 +20,7 @@ def generate_launch_description():
     sensor_rate = LaunchConfiguration('sensor_rate')
     return LaunchDescription([
         DeclareLaunchArgument('robot_name', default_value='scout',
-                              description='Namespace of every node and the controller\'s name'),
+                              description="Namespace of every node and the controller's name"),
         DeclareLaunchArgument('sensor_rate', default_value='5.0',
                               description='Sensor rate in Hz'),
         Node(package='my_robot_pkg', executable='sensor_publisher', name='sensor_publisher',

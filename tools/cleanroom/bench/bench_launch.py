@@ -38,17 +38,16 @@ import sys
 import tempfile
 import time
 from pathlib import Path
-from typing import Dict, List, Optional, Tuple
 
 from launch_testing.domain_isolation import lease_free_domain
 
 # Jazzy on a 2-core machine: N -> (all started, start to clean shutdown), seconds.
-REFERENCE: Dict[int, Tuple[Optional[float], Optional[float]]] = {
+REFERENCE: dict[int, tuple[float | None, float | None]] = {
     10: (0.11, None),
     30: (0.88, 3.6),
 }
 
-TALKER = '''
+TALKER = """
 import sys
 
 import rclpy
@@ -76,9 +75,9 @@ def main():
     finally:
         node.destroy_node()
         rclpy.try_shutdown()
-'''
+"""
 
-SETUP_PY = '''
+SETUP_PY = """
 from setuptools import setup
 
 setup(
@@ -87,9 +86,9 @@ setup(
                 ('share/bench_pkg', ['package.xml'])],
     entry_points={'console_scripts': ['talker = bench_pkg.talker:main']},
 )
-'''
+"""
 
-PACKAGE_XML = '''<?xml version="1.0"?>
+PACKAGE_XML = """<?xml version="1.0"?>
 <package format="3">
   <name>bench_pkg</name>
   <version>0.0.1</version>
@@ -100,10 +99,10 @@ PACKAGE_XML = '''<?xml version="1.0"?>
   <exec_depend>std_msgs</exec_depend>
   <export><build_type>ament_python</build_type></export>
 </package>
-'''
+"""
 
 
-def lease_ros_domain() -> Tuple[int, int]:
+def lease_ros_domain() -> tuple[int, int]:
     """Lock a free ROS domain ID in 1-89 (CONTRIBUTING.md allocator); return (id, fd)."""
     lease = lease_free_domain()
     if lease is None:
@@ -136,7 +135,7 @@ def use_prefix(prefix: Path) -> None:
         os.environ[var] = str(value) + (os.pathsep + old if old else '')
 
 
-def run_once(count: int) -> Dict[str, float]:
+def run_once(count: int) -> dict[str, float]:
     """Launch `count` talkers, shut down when all are ready; return the timings."""
     import launch
     import launch.logging
@@ -145,17 +144,17 @@ def run_once(count: int) -> Dict[str, float]:
     from launch_ros.actions import Node
 
     launch.logging.reset()
-    marks: Dict[str, float] = {}
-    started: List[int] = []
+    marks: dict[str, float] = {}
+    started: list[int] = []
     ready: set = set()
-    exit_codes: List[int] = []
+    exit_codes: list[int] = []
 
     def on_start(event: object, context: object) -> None:
         started.append(event.pid)
         if len(started) == count:
             marks['started'] = time.monotonic()
 
-    def on_stderr(event: object) -> Optional[list]:
+    def on_stderr(event: object) -> list | None:
         if b'ready' in event.text:
             ready.add(event.pid)
             if len(ready) == count and 'ready' not in marks:
@@ -186,7 +185,7 @@ def run_once(count: int) -> Dict[str, float]:
     return {**{key: value - t0 for key, value in marks.items()}, **cpu}
 
 
-def run_direct(count: int, executable: str) -> Dict[str, float]:
+def run_direct(count: int, executable: str) -> dict[str, float]:
     """The floor: start the same talker command lines without launch, stop with SIGINT."""
     import selectors
     import signal
@@ -224,11 +223,11 @@ def _cpu(who: int) -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def _ratio(ours: float, reference: Optional[float]) -> str:
+def _ratio(ours: float, reference: float | None) -> str:
     return '-' if reference is None else f'{ours / reference:.2f}'
 
 
-def _ref(value: Optional[float]) -> str:
+def _ref(value: float | None) -> str:
     return '-' if value is None else f'{value:.2f}'
 
 

@@ -30,7 +30,7 @@ ROBOTS = ('/robot1/robot_controller', '/robot2/robot_controller')
 #: `ros2 launch --show-args` never starts anything; this only stops a hang.
 SHOW_ARGS_TIMEOUT = 60
 ARGUMENT_HEADER = re.compile(r"^    '(?P<name>[^']+)':$")
-DEFAULT_LINE = re.compile(r"^        \(default: (?P<value>.*)\)$")
+DEFAULT_LINE = re.compile(r'^        \(default: (?P<value>.*)\)$')
 NO_DESCRIPTION = ('no description given', 'One of: ')
 
 

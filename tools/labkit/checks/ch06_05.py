@@ -63,8 +63,8 @@ def _processor_reads_merged(verdict: Verdict, run: LaunchProbe) -> None:
     topics = read_by(run, PROCESSOR)
     hint = f"give it remappings=[('distance', '{MERGED}')] as well"
     if '/distance' in topics:
-        hint = ("remapping the sensors does not change the processor: it still reads the name "
-                "in its code, distance, which is /distance in no namespace; " + hint)
+        hint = ('remapping the sensors does not change the processor: it still reads the name '
+                'in its code, distance, which is /distance in no namespace; ' + hint)
     verdict.expect(topics == [MERGED], f'{PROCESSOR} reads {MERGED}',
                    f'{PROCESSOR} reads {", ".join(topics) or "nothing"} instead of {MERGED}: '
                    + hint)

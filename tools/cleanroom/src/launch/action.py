@@ -1,7 +1,7 @@
 """Base class of actions, the entities that do something when visited."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Optional
+from typing import TYPE_CHECKING
 
 from .condition import Condition
 from .events import ExecutionComplete
@@ -19,11 +19,11 @@ class Action(LaunchDescriptionEntity):
     future completes) so that OnExecutionComplete handlers can chain work.
     """
 
-    def __init__(self, *, condition: Optional[Condition] = None) -> None:
+    def __init__(self, *, condition: Condition | None = None) -> None:
         self.__condition = condition
 
     @property
-    def condition(self) -> Optional[Condition]:
+    def condition(self) -> Condition | None:
         """The condition guarding this action, if any."""
         return self.__condition
 
@@ -31,7 +31,7 @@ class Action(LaunchDescriptionEntity):
         """Return the class name; subclasses say more."""
         return f'{type(self).__name__}'
 
-    def visit(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def visit(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Execute the action if its condition holds."""
         if self.__condition is not None and not self.__condition.evaluate(context):
             return None
@@ -50,6 +50,6 @@ class Action(LaunchDescriptionEntity):
         else:
             future.add_done_callback(lambda _: context.emit_event_sync(event))
 
-    def execute(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Do the action's work; return entities to visit next, if any."""
         return None

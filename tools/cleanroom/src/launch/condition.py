@@ -1,7 +1,8 @@
 """Base class of conditions that decide whether an action runs."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, Optional
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from .launch_context import LaunchContext
@@ -10,7 +11,7 @@ if TYPE_CHECKING:
 class Condition:
     """Wraps a predicate on the launch context, evaluated when the action is visited."""
 
-    def __init__(self, *, predicate: Optional[Callable[[LaunchContext], bool]] = None) -> None:
+    def __init__(self, *, predicate: Callable[[LaunchContext], bool] | None = None) -> None:
         self._predicate = predicate
 
     def describe(self) -> str:

@@ -1,7 +1,8 @@
 """Event handlers: a matcher deciding which events they take, and what they do."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, List, Optional, Tuple
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from .event import Event
 from .launch_description_entity import LaunchDescriptionEntity
@@ -10,7 +11,7 @@ if TYPE_CHECKING:
     from .launch_context import LaunchContext
 
 
-def normalize_entities(entities: object) -> List[LaunchDescriptionEntity]:
+def normalize_entities(entities: object) -> list[LaunchDescriptionEntity]:
     """Turn None, one entity or an iterable of entities into a list.
 
     Anything else (e.g. a handler that returns True) is a TypeError that says
@@ -48,12 +49,12 @@ class BaseEventHandler:
         return self.__handle_once
 
     @property
-    def handler_description(self) -> Optional[str]:
+    def handler_description(self) -> str | None:
         """Describes what the handler does (for introspection)."""
         return None
 
     @property
-    def matcher_description(self) -> Optional[str]:
+    def matcher_description(self) -> str | None:
         """Describes which events the handler takes (for introspection)."""
         return None
 
@@ -61,13 +62,13 @@ class BaseEventHandler:
         """Return True if this handler takes `event`."""
         return bool(self.__matcher(event))
 
-    def describe(self) -> Tuple[str, List[LaunchDescriptionEntity]]:
+    def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
         """Return a description and the entities the handler may produce."""
         return (f'{type(self).__name__}(matcher={self.matcher_description!r}, '
                 f'handler={self.handler_description!r}, handle_once={self.handle_once})', [])
 
     def handle(self, event: Event,
-               context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+               context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Record the event in the context locals; unregister if `handle_once`."""
         context.extend_locals({'event': event})
         if self.__handle_once:
@@ -84,17 +85,17 @@ class EventHandler(BaseEventHandler):
         self.__entities = normalize_entities(entities) if entities is not None else None
 
     @property
-    def entities(self) -> Optional[List[LaunchDescriptionEntity]]:
+    def entities(self) -> list[LaunchDescriptionEntity] | None:
         """The entities returned for each matching event."""
         return self.__entities
 
-    def describe(self) -> Tuple[str, List[LaunchDescriptionEntity]]:
+    def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
         """Return a description and the entities."""
         text, _ = super().describe()
         return (text, list(self.__entities or []))
 
     def handle(self, event: Event,
-               context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+               context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Return the entities."""
         super().handle(event, context)
         return self.__entities

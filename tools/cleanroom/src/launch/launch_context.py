@@ -5,8 +5,9 @@ import asyncio
 import collections
 import os
 import threading
+from collections.abc import Callable, Iterable
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any, Callable, Dict, Iterable, List, Optional
+from typing import Any
 
 from .event import Event
 from .event_handler import BaseEventHandler
@@ -17,7 +18,7 @@ _SPAWNER_THREADS = 4
 class _Locals:
     """Attribute access to the current locals, e.g. `context.locals.event`."""
 
-    def __init__(self, values: Dict[str, Any]) -> None:
+    def __init__(self, values: dict[str, Any]) -> None:
         object.__setattr__(self, '_values', values)
 
     def __getattr__(self, name: str) -> Any:
@@ -28,7 +29,7 @@ class _Locals:
                                  f'it contains: [{", ".join(self._values)}]') from None
 
     def __setattr__(self, name: str, value: Any) -> None:
-        raise AttributeError("context.locals is read-only; use context.extend_locals()")
+        raise AttributeError('context.locals is read-only; use context.extend_locals()')
 
 
 class LaunchContext:
@@ -41,30 +42,30 @@ class LaunchContext:
     launching process's own environment.
     """
 
-    def __init__(self, *, argv: Optional[Iterable[str]] = None,
+    def __init__(self, *, argv: Iterable[str] | None = None,
                  noninteractive: bool = False) -> None:
         self.__argv = list(argv or [])
         self.__noninteractive = noninteractive
-        self._event_handlers: List[BaseEventHandler] = []
+        self._event_handlers: list[BaseEventHandler] = []
         self.__events: collections.deque = collections.deque()
-        self.__wakeup: Optional[asyncio.Event] = None
-        self.__loop: Optional[asyncio.AbstractEventLoop] = None
-        self.__loop_thread: Optional[int] = None
-        self.__globals: Dict[str, Any] = {}
-        self.__locals_stack: List[Dict[str, Any]] = []
-        self.__locals: Dict[str, Any] = {}
-        self.__configurations_stack: List[Dict[str, Any]] = []
-        self.__launch_configurations: Dict[str, Any] = {}
+        self.__wakeup: asyncio.Event | None = None
+        self.__loop: asyncio.AbstractEventLoop | None = None
+        self.__loop_thread: int | None = None
+        self.__globals: dict[str, Any] = {}
+        self.__locals_stack: list[dict[str, Any]] = []
+        self.__locals: dict[str, Any] = {}
+        self.__configurations_stack: list[dict[str, Any]] = []
+        self.__launch_configurations: dict[str, Any] = {}
         self.__initial_environment = dict(os.environ)
-        self.__environment_stack: List[Dict[str, str]] = []
-        self.__environment: Dict[str, str] = dict(self.__initial_environment)
+        self.__environment_stack: list[dict[str, str]] = []
+        self.__environment: dict[str, str] = dict(self.__initial_environment)
         self.__is_shutdown = False
         self.__process_count = 0
-        self.__spawner: Optional[ThreadPoolExecutor] = None
+        self.__spawner: ThreadPoolExecutor | None = None
 
     # --- plain properties -------------------------------------------------
     @property
-    def argv(self) -> List[str]:
+    def argv(self) -> list[str]:
         """The arguments given to the LaunchService."""
         return self.__argv
 
@@ -82,11 +83,11 @@ class LaunchContext:
         self.__is_shutdown = state
 
     @property
-    def asyncio_loop(self) -> Optional[asyncio.AbstractEventLoop]:
+    def asyncio_loop(self) -> asyncio.AbstractEventLoop | None:
         """The event loop the LaunchService runs on (set before anything executes)."""
         return self.__loop
 
-    def _set_asyncio_loop(self, loop: Optional[asyncio.AbstractEventLoop]) -> None:
+    def _set_asyncio_loop(self, loop: asyncio.AbstractEventLoop | None) -> None:
         self.__loop = loop
         self.__loop_thread = threading.get_ident() if loop is not None else None
         self.__wakeup = asyncio.Event() if loop is not None else None
@@ -122,11 +123,11 @@ class LaunchContext:
         """Read-only attribute view of the current locals."""
         return _Locals(self.__locals)
 
-    def extend_locals(self, extensions: Dict[str, Any]) -> None:
+    def extend_locals(self, extensions: dict[str, Any]) -> None:
         """Add or replace locals in the current scope."""
         self.__locals.update(extensions)
 
-    def get_locals_as_dict(self) -> Dict[str, Any]:
+    def get_locals_as_dict(self) -> dict[str, Any]:
         """Return a copy of the current locals."""
         return dict(self.__locals)
 
@@ -138,17 +139,17 @@ class LaunchContext:
             raise RuntimeError('locals stack unexpectedly empty')
         self.__locals = self.__locals_stack.pop()
 
-    def extend_globals(self, extensions: Dict[str, Any]) -> None:
+    def extend_globals(self, extensions: dict[str, Any]) -> None:
         """Add globals, visible to all scopes."""
         self.__globals.update(extensions)
 
-    def get_globals(self) -> Dict[str, Any]:
+    def get_globals(self) -> dict[str, Any]:
         """Return the globals dict."""
         return self.__globals
 
     # --- launch configurations --------------------------------------------
     @property
-    def launch_configurations(self) -> Dict[str, Any]:
+    def launch_configurations(self) -> dict[str, Any]:
         """The launch configurations of the current scope (a mutable dict)."""
         return self.__launch_configurations
 
@@ -162,7 +163,7 @@ class LaunchContext:
 
     # --- environment ------------------------------------------------------
     @property
-    def environment(self) -> Dict[str, str]:
+    def environment(self) -> dict[str, str]:
         """The environment processes get, in the current scope (a mutable dict)."""
         return self.__environment
 
@@ -212,7 +213,7 @@ class LaunchContext:
         """Queue an event (coroutine form)."""
         self.emit_event_sync(event)
 
-    def _next_event(self) -> Optional[Event]:
+    def _next_event(self) -> Event | None:
         return self.__events.popleft() if self.__events else None
 
     def _has_events(self) -> bool:

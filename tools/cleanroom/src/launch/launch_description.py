@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import warnings
-from typing import TYPE_CHECKING, Iterable, List, Optional, Tuple
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from .action import Action
 from .launch_description_entity import LaunchDescriptionEntity
@@ -16,13 +17,13 @@ if TYPE_CHECKING:
 class LaunchDescription(LaunchDescriptionEntity):
     """An ordered collection of entities; visiting it yields them in order."""
 
-    def __init__(self, initial_entities: Optional[Iterable[LaunchDescriptionEntity]] = None, *,
-                 deprecated_reason: Optional[str] = None) -> None:
+    def __init__(self, initial_entities: Iterable[LaunchDescriptionEntity] | None = None, *,
+                 deprecated_reason: str | None = None) -> None:
         self.__entities = list(initial_entities) if initial_entities is not None else []
         self.__deprecated_reason = deprecated_reason
 
     @property
-    def entities(self) -> List[LaunchDescriptionEntity]:
+    def entities(self) -> list[LaunchDescriptionEntity]:
         """The entities, in order."""
         return self.__entities
 
@@ -32,7 +33,7 @@ class LaunchDescription(LaunchDescriptionEntity):
         return self.__deprecated_reason is not None
 
     @property
-    def deprecated_reason(self) -> Optional[str]:
+    def deprecated_reason(self) -> str | None:
         """Why the description is deprecated, if it is."""
         return self.__deprecated_reason
 
@@ -48,11 +49,11 @@ class LaunchDescription(LaunchDescriptionEntity):
         """Return e.g. 'LaunchDescription(4 entities)'."""
         return f'LaunchDescription({len(self.__entities)} entities)'
 
-    def describe_sub_entities(self) -> List[LaunchDescriptionEntity]:
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """The entities."""
         return self.__entities
 
-    def visit(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def visit(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Return the entities so the service visits them in order."""
         if self.__deprecated_reason is not None:
             where = context.get_locals_as_dict().get('current_launch_file_path')
@@ -61,7 +62,7 @@ class LaunchDescription(LaunchDescriptionEntity):
         return self.__entities
 
     def get_launch_arguments(self, conditional_inclusion: bool = False
-                             ) -> List[DeclareLaunchArgument]:
+                             ) -> list[DeclareLaunchArgument]:
         """Return the DeclareLaunchArgument actions found in this description.
 
         Found by walking the entities and their (conditional) sub-entities;
@@ -73,17 +74,17 @@ class LaunchDescription(LaunchDescriptionEntity):
 
     def get_launch_arguments_with_include_launch_description_actions(
             self, conditional_inclusion: bool = False
-    ) -> List[Tuple[DeclareLaunchArgument, List[IncludeLaunchDescription]]]:
+    ) -> list[tuple[DeclareLaunchArgument, list[IncludeLaunchDescription]]]:
         """Like get_launch_arguments(), with the includes each argument was found through."""
         # late: actions build on LaunchDescription, so it cannot import them at module level
         from .actions.declare_launch_argument import DeclareLaunchArgument
         from .actions.include_launch_description import IncludeLaunchDescription
 
-        found: List[Tuple[DeclareLaunchArgument, List[IncludeLaunchDescription]]] = []
+        found: list[tuple[DeclareLaunchArgument, list[IncludeLaunchDescription]]] = []
         names = set()
 
         def walk(entities: Iterable[LaunchDescriptionEntity], conditional: bool,
-                 includes: List[IncludeLaunchDescription]) -> None:
+                 includes: list[IncludeLaunchDescription]) -> None:
             for entity in entities:
                 if isinstance(entity, DeclareLaunchArgument):
                     if entity.name in names:

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import asyncio
-from typing import TYPE_CHECKING, List, Optional, Sequence, Tuple
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
     from .launch_context import LaunchContext
@@ -15,7 +16,7 @@ class LaunchDescriptionEntity:
     what makes push/pop style scoping (GroupAction) work.
     """
 
-    def visit(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def visit(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Do this entity's work and return entities to visit next, if any."""
         raise NotImplementedError(f'visit() not implemented for {type(self).__name__}')
 
@@ -23,15 +24,15 @@ class LaunchDescriptionEntity:
         """Return a one-line description (used by `ros2 launch --print`)."""
         return self.__repr__()
 
-    def describe_sub_entities(self) -> List[LaunchDescriptionEntity]:
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """Entities that are always visited after this one (for introspection)."""
         return []
 
     def describe_conditional_sub_entities(
-            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+            self) -> list[tuple[str, Sequence[LaunchDescriptionEntity]]]:
         """(condition text, entities) pairs visited only when something happens."""
         return []
 
-    def get_asyncio_future(self) -> Optional[asyncio.Future]:
+    def get_asyncio_future(self) -> asyncio.Future | None:
         """A future that completes when this entity's work is over, or None if it is."""
         return None

@@ -1,7 +1,7 @@
 """Where a LaunchDescription comes from: given directly, or loaded from a location."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING
 
 from .launch_context import LaunchContext
 from .launch_description import LaunchDescription
@@ -18,12 +18,12 @@ class LaunchDescriptionSource:
     the including action, so a path can depend on launch configurations.
     """
 
-    def __init__(self, launch_description: Optional[LaunchDescription] = None,
+    def __init__(self, launch_description: LaunchDescription | None = None,
                  location: SomeSubstitutionsType = '<string>',
                  method: str = 'interpreted launch file') -> None:
         self.__launch_description = launch_description
         self.__location = normalize_to_list_of_substitutions(location)
-        self.__expanded_location: Optional[str] = None
+        self.__expanded_location: str | None = None
         self.__method = method
 
     @property
@@ -38,7 +38,7 @@ class LaunchDescriptionSource:
         """How the description is obtained."""
         return self.__method
 
-    def try_get_launch_description_without_context(self) -> Optional[LaunchDescription]:
+    def try_get_launch_description_without_context(self) -> LaunchDescription | None:
         """Best-effort load for introspection (--show-args); None when not possible."""
         if self.__launch_description is not None:
             return self.__launch_description

@@ -1,14 +1,12 @@
 """Render a launch description as a tree (what `ros2 launch --print` shows)."""
 from __future__ import annotations
 
-from typing import List
-
 from .launch_description import LaunchDescription
 from .launch_description_entity import LaunchDescriptionEntity
 
 
-def _tree(entity: LaunchDescriptionEntity, prefix: str, out: List[str], depth: int) -> None:
-    children: List[tuple] = [('', child) for child in entity.describe_sub_entities()]
+def _tree(entity: LaunchDescriptionEntity, prefix: str, out: list[str], depth: int) -> None:
+    children: list[tuple] = [('', child) for child in entity.describe_sub_entities()]
     for condition, entities in entity.describe_conditional_sub_entities():
         children += [(f'[{condition}] ', child) for child in entities]
     if depth > 50:
@@ -19,7 +17,7 @@ def _tree(entity: LaunchDescriptionEntity, prefix: str, out: List[str], depth: i
         _tree(child, prefix + ('    ' if last else '│   '), out, depth + 1)
 
 
-def format_entities(entities: List[LaunchDescriptionEntity]) -> str:
+def format_entities(entities: list[LaunchDescriptionEntity]) -> str:
     """Return the tree of several entities."""
     return format_launch_description(LaunchDescription(entities))
 

@@ -6,7 +6,7 @@ import logging
 import signal
 import threading
 import traceback
-from typing import Iterable, List, Optional, Set
+from collections.abc import Iterable
 
 from . import logging as launch_logging
 from .event import Event
@@ -17,7 +17,7 @@ from .launch_description import LaunchDescription
 from .launch_description_entity import LaunchDescriptionEntity
 
 
-def parse_launch_arguments(argv: Iterable[str]) -> List[tuple]:
+def parse_launch_arguments(argv: Iterable[str]) -> list[tuple]:
     """Return the (name, value) pairs of the `name:=value` items of argv."""
     return [tuple(arg.split(':=', 1)) for arg in argv if ':=' in arg]
 
@@ -32,7 +32,7 @@ class LaunchService:
     returns.  An exception from an action ends the launch with exit code 1.
     """
 
-    def __init__(self, *, argv: Optional[Iterable[str]] = None, noninteractive: bool = False,
+    def __init__(self, *, argv: Iterable[str] | None = None, noninteractive: bool = False,
                  debug: bool = False) -> None:
         self.__argv = list(argv or [])
         self.__debug = debug
@@ -47,7 +47,7 @@ class LaunchService:
         for name, value in parse_launch_arguments(self.__argv):
             self.__context.launch_configurations[name] = value
         self.__context.register_event_handler(OnIncludeLaunchDescription())
-        self.__pending: Set[asyncio.Future] = set()
+        self.__pending: set[asyncio.Future] = set()
         self.__shutdown_handled = False
         self.__return_code = 0
         self.__running = False
@@ -170,7 +170,7 @@ class LaunchService:
             self.__context.emit_event_sync(Shutdown(reason=f'exception: {exc}'))
 
     # --- signals --------------------------------------------------------------
-    def __install_signal_handlers(self, loop: asyncio.AbstractEventLoop) -> List[int]:
+    def __install_signal_handlers(self, loop: asyncio.AbstractEventLoop) -> list[int]:
         if threading.current_thread() is not threading.main_thread():
             return []  # signals can only be handled on the main thread
         installed = []

@@ -1,8 +1,8 @@
 """Type alias for one entity or several."""
-from typing import Iterable, Union
+from collections.abc import Iterable
 
 from .launch_description_entity import LaunchDescriptionEntity
 
-SomeEntitiesType = Union[LaunchDescriptionEntity, Iterable[LaunchDescriptionEntity]]
+SomeEntitiesType = LaunchDescriptionEntity | Iterable[LaunchDescriptionEntity]
 
 SomeEntitiesType_types_tuple = (LaunchDescriptionEntity, list, tuple)

@@ -1,13 +1,9 @@
 """Type alias for values that may be text, a substitution or a mix of both."""
 import os
-from typing import Iterable, Union
+from collections.abc import Iterable
 
 from .substitution import Substitution
 
-SomeSubstitutionsType = Union[
-    str,
-    Substitution,
-    Iterable[Union[str, Substitution]],
-]
+SomeSubstitutionsType = str | Substitution | Iterable[str | Substitution]
 
 SomeSubstitutionsType_types_tuple = (str, Substitution, os.PathLike, list, tuple)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import functools
 import inspect
-from typing import Callable, Optional
+from collections.abc import Callable
 
 import pytest
 
@@ -51,7 +51,7 @@ def _finish(generator) -> None:
     raise RuntimeError('a launch_pytest fixture must yield only once')
 
 
-def fixture_name(obj: object) -> Optional[str]:
+def fixture_name(obj: object) -> str | None:
     """The pytest name of a fixture given to @pytest.mark.launch(fixture=...)."""
     if obj is None:
         return None

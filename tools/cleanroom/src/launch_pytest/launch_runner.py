@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import asyncio
 import threading
-from typing import Callable, Coroutine, Dict, Optional
+from collections.abc import Callable, Coroutine
 
 import launch
 from launch_testing.actions import ReadyToTest
@@ -12,7 +12,7 @@ from launch_testing.actions.ready_to_test import add_ready_callback
 READY_TIMEOUT = 120.0
 STOP_TIMEOUT = 60.0
 
-_RUNNERS: Dict[int, LaunchRunner] = {}
+_RUNNERS: dict[int, LaunchRunner] = {}
 
 
 def description_of(value: object, function: Callable) -> launch.LaunchDescription:
@@ -37,7 +37,7 @@ def unregister(value: object) -> None:
     _RUNNERS.pop(id(value), None)
 
 
-def runner_of(value: object) -> Optional[LaunchRunner]:
+def runner_of(value: object) -> LaunchRunner | None:
     """The running launch of a fixture value, if any."""
     return _RUNNERS.get(id(value))
 
@@ -51,7 +51,7 @@ class LaunchRunner:
         self.service = launch.LaunchService()
         self.ready = threading.Event()
         self.finished = threading.Event()
-        self.return_code: Optional[int] = None
+        self.return_code: int | None = None
         self.loop = asyncio.new_event_loop()
         add_ready_callback(self.service.context, self.ready.set)
         self.service.include_launch_description(description)

@@ -5,7 +5,7 @@ entry point, so that `launch` never imports launch_ros.
 """
 from __future__ import annotations
 
-from typing import Any, Dict, List, Tuple, Type
+from typing import Any
 
 from launch.frontend.entity import Entity
 from launch.frontend.expose import (
@@ -25,7 +25,7 @@ from .actions import Node, PushRosNamespace, SetParameter, SetRemap
 from .parameter_descriptions import ParameterFile, ParameterValue
 from .substitutions import ExecutableInPackage, FindPackagePrefix, FindPackageShare
 
-Parsed = Tuple[Type, Dict[str, Any]]
+Parsed = tuple[type, dict[str, Any]]
 
 PARAMETER_TYPES = {'str': str, 'int': int, 'float': float, 'bool': bool}
 
@@ -54,9 +54,9 @@ def parse_parameter_value(param: Entity, parser: Any) -> Any:
     return ParameterValue(value, value_type=PARAMETER_TYPES[type_name])
 
 
-def parse_parameters(params: List[Entity], parser: Any) -> List[Any]:
+def parse_parameters(params: list[Entity], parser: Any) -> list[Any]:
     """`<param>` entities: each a dict of its own (nested ones grouped), or a file."""
-    result: List[Any] = []
+    result: list[Any] = []
     for param in params:
         path = param.get_attr('from', optional=True)
         if path is not None:
@@ -70,9 +70,9 @@ def parse_parameters(params: List[Entity], parser: Any) -> List[Any]:
     return result
 
 
-def parse_parameter_dict(params: List[Entity], parser: Any) -> Dict[str, Any]:
+def parse_parameter_dict(params: list[Entity], parser: Any) -> dict[str, Any]:
     """`{name: value}` of params, nested `<param name><param .../></param>` as nested dicts."""
-    values: Dict[str, Any] = {}
+    values: dict[str, Any] = {}
     for param in params:
         name = param.get_attr('name')
         children = nested(param, 'param')
@@ -84,7 +84,7 @@ def parse_parameter_dict(params: List[Entity], parser: Any) -> Dict[str, Any]:
     return values
 
 
-def parse_remappings(entity: Entity, parser: Any) -> List[Tuple[Any, Any]]:
+def parse_remappings(entity: Entity, parser: Any) -> list[tuple[Any, Any]]:
     """`<remap from to/>` entities as (from, to) substitution pairs."""
     remappings = []
     for remap in nested(entity, 'remap'):
@@ -141,14 +141,14 @@ def parse_set_remap(entity: Entity, parser: Any) -> Parsed:
                       **parse_condition(entity, parser)}
 
 
-def _package_substitution(name: str, cls: Type) -> Any:
-    def parse(args: List[List[Any]]) -> Parsed:
+def _package_substitution(name: str, cls: type) -> Any:
+    def parse(args: list[list[Any]]) -> Parsed:
         check_count(name, args, 1, 1)
         return cls, {'package': args[0]}
     return parse
 
 
-def _exec_in_pkg(args: List[List[Any]]) -> Parsed:
+def _exec_in_pkg(args: list[list[Any]]) -> Parsed:
     check_count('exec-in-pkg', args, 2, 2)
     return ExecutableInPackage, {'executable': args[0], 'package': args[1]}
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any, Optional, Union
+from typing import Any
 
 from launch import LaunchContext, Substitution
 from launch.utilities import normalize_to_list_of_substitutions
@@ -91,14 +91,14 @@ class ParameterFile:
     temporary file goes away with `cleanup()` or when the launch ends.
     """
 
-    def __init__(self, param_file: Union[str, Path, Any], *,
-                 allow_substs: Union[bool, Any] = False) -> None:
+    def __init__(self, param_file: str | Path | Any, *,
+                 allow_substs: bool | Any = False) -> None:
         self.__param_file = (param_file if isinstance(param_file, Path)
                              else normalize_to_list_of_substitutions(param_file))
         self.__allow_substs = (allow_substs if isinstance(allow_substs, bool)
                                else normalize_to_list_of_substitutions(allow_substs))
-        self.__evaluated: Optional[Path] = None
-        self.__created: Optional[str] = None
+        self.__evaluated: Path | None = None
+        self.__created: str | None = None
 
     @property
     def param_file(self) -> Any:

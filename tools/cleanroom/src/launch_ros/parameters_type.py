@@ -3,15 +3,15 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any, Union
+from typing import Any
 
-ParameterScalarType = Union[str, int, float, bool, bytes]
-ParameterSequenceType = Union[Sequence[str], Sequence[int], Sequence[float], Sequence[bool]]
-ParameterValueType = Union[ParameterScalarType, ParameterSequenceType]
+ParameterScalarType = str | int | float | bool | bytes
+ParameterSequenceType = Sequence[str] | Sequence[int] | Sequence[float] | Sequence[bool]
+ParameterValueType = ParameterScalarType | ParameterSequenceType
 SomeParameterValue = Any
 SomeParameterName = Any
 ParametersDict = Mapping[Any, Any]
-SomeParameterFile = Union[str, Path, Any]
-SomeParameters = Sequence[Union[SomeParameterFile, ParametersDict, Any]]
+SomeParameterFile = str | Path | Any
+SomeParameters = Sequence[SomeParameterFile | ParametersDict | Any]
 EvaluatedParameterValue = ParameterValueType
-EvaluatedParameters = Sequence[Union[Path, Mapping[str, EvaluatedParameterValue], Any]]
+EvaluatedParameters = Sequence[Path | Mapping[str, EvaluatedParameterValue] | Any]

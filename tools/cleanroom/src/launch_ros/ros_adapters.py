@@ -11,7 +11,7 @@ import atexit
 import os
 import threading
 import weakref
-from typing import Any, Optional
+from typing import Any
 
 from launch import LaunchContext
 
@@ -21,12 +21,12 @@ from ._support.launch_cleanup import add_shutdown_callback
 class ROSAdapter:
     """Own one rclpy context, node and executor thread."""
 
-    def __init__(self, *, argv: Optional[list[str]] = None, autostart: bool = True) -> None:
+    def __init__(self, *, argv: list[str] | None = None, autostart: bool = True) -> None:
         self.__argv = argv
         self.__ros_context: Any = None
         self.__ros_node: Any = None
         self.__executor: Any = None
-        self.__thread: Optional[threading.Thread] = None
+        self.__thread: threading.Thread | None = None
         self.__stop = threading.Event()
         self.__workers: list[threading.Thread] = []
         if autostart:

@@ -1,7 +1,8 @@
 """`post_shutdown_test()`: marks TestCase classes that run after the launch stopped."""
 from __future__ import annotations
 
-from typing import Callable, TypeVar
+from collections.abc import Callable
+from typing import TypeVar
 
 T = TypeVar('T', bound=type)
 

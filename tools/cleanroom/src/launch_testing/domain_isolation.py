@@ -12,8 +12,8 @@ import fcntl
 import os
 import tempfile
 import time
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator, Optional
 
 DOMAIN_IDS = range(1, 90)
 
@@ -24,7 +24,7 @@ def lock_dir() -> Path:
     return folder
 
 
-def lease_free_domain() -> Optional[tuple]:
+def lease_free_domain() -> tuple | None:
     """Lock the first free domain ID; (domain id, fd holding the lock), or None."""
     for domain_id in DOMAIN_IDS:
         fd = os.open(lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
@@ -40,7 +40,7 @@ def lease_free_domain() -> Optional[tuple]:
 
 
 @contextlib.contextmanager
-def isolated_domain(timeout: float = 60.0) -> Iterator[Optional[int]]:
+def isolated_domain(timeout: float = 60.0) -> Iterator[int | None]:
     """Set ROS_DOMAIN_ID to a leased free domain unless it is already set.
 
     Yields the leased domain, or None when the caller's environment already

@@ -4,13 +4,13 @@ from __future__ import annotations
 import re
 import threading
 import time
-from typing import Callable, Dict, List, Optional, Union
+from collections.abc import Callable
 
 from launch.actions import ExecuteProcess
 
 from .util.proc_lookup import NoMatchingProcessException, resolveProcesses
 
-Expected = Union[str, 're.Pattern[str]', Callable[[str], bool]]
+Expected = str | re.Pattern[str] | Callable[[str], bool]
 
 
 def _text(event) -> str:
@@ -33,9 +33,9 @@ class IoHandler:
     """
 
     def __init__(self) -> None:
-        self._events: List[object] = []
-        self._by_action: Dict[int, List[object]] = {}
-        self._actions: List[ExecuteProcess] = []
+        self._events: list[object] = []
+        self._by_action: dict[int, list[object]] = {}
+        self._actions: list[ExecuteProcess] = []
 
     def append(self, process_io) -> None:
         """Record one ProcessIO event."""
@@ -49,20 +49,20 @@ class IoHandler:
     def __iter__(self):
         return iter(list(self._events))
 
-    def processes(self) -> List[ExecuteProcess]:
+    def processes(self) -> list[ExecuteProcess]:
         """The processes that produced output, in order of their first output."""
         return list(self._actions)
 
-    def process_names(self) -> List[str]:
+    def process_names(self) -> list[str]:
         """Names of the processes that produced output."""
         return [str(p.process_details['name']) for p in self._actions]
 
-    def __getitem__(self, key) -> List[object]:
+    def __getitem__(self, key) -> list[object]:
         """The ProcessIO events of one process (action or name)."""
         processes = resolveProcesses(self, process=key)
         return list(self._by_action[id(processes[0])])
 
-    def text(self, process: ExecuteProcess, stream: Optional[str] = None) -> str:
+    def text(self, process: ExecuteProcess, stream: str | None = None) -> str:
         """Everything `process` wrote to `stream` ('stdout', 'stderr' or both when None)."""
         events = self._by_action.get(id(process), [])
         wanted = {'stdout': (1,), 'stderr': (2,), None: (1, 2)}.get(stream)
@@ -84,7 +84,7 @@ class ActiveIoHandler(IoHandler):
             super().append(process_io)
             self._condition.notify_all()
 
-    def processes(self) -> List[ExecuteProcess]:
+    def processes(self) -> list[ExecuteProcess]:
         with self._condition:
             return super().processes()
 
@@ -103,9 +103,9 @@ class ActiveIoHandler(IoHandler):
                 return True
         return False
 
-    def waitFor(self, expected_output: Expected, process=None, cmd_args: Optional[str] = None,
+    def waitFor(self, expected_output: Expected, process=None, cmd_args: str | None = None,
                 *, strict_proc_matching: bool = True, output_filter=None, timeout: float = 10,
-                stream: Optional[str] = None) -> bool:
+                stream: str | None = None) -> bool:
         """Wait until `expected_output` appears; False after `timeout` seconds.
 
         Raises NoMatchingProcessException if, at the end, the process produced

@@ -3,11 +3,10 @@ from __future__ import annotations
 
 import unittest
 import xml.etree.ElementTree as ET
-from typing import Dict
 
 
 def unittestResultsToXml(*, name: str = 'launch_test',  # noqa: N802 - Jazzy's name
-                         test_results: Dict[str, unittest.TestResult]) -> ET.ElementTree:
+                         test_results: dict[str, unittest.TestResult]) -> ET.ElementTree:
     """One <testsuite> per test run, one <testcase> per test method."""
     root = ET.Element('testsuites', name=name)
     totals = {'tests': 0, 'failures': 0, 'errors': 0, 'skipped': 0, 'time': 0.0}

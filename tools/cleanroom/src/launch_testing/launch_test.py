@@ -5,7 +5,6 @@ import argparse
 import logging
 import os
 import sys
-from typing import List, Optional
 
 from .domain_isolation import isolated_domain
 from .junitxml import unittestResultsToXml
@@ -34,7 +33,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              'reports.')
 
 
-def parse_arguments(argv: Optional[List[str]] = None):
+def parse_arguments(argv: list[str] | None = None):
     """Return (parser, args) for `argv` (default: the command line)."""
     parser = argparse.ArgumentParser(description='Launch integration testing tool')
     add_arguments(parser)
@@ -80,7 +79,7 @@ def run(parser: argparse.ArgumentParser, args, test_runner_cls=LaunchTestRunner)
     return 0 if passed else 1
 
 
-def main(argv: Optional[List[str]] = None) -> int:
+def main(argv: list[str] | None = None) -> int:
     """Entry point of `launch_test`."""
     logging.basicConfig()
     parser, args = parse_arguments(argv)

@@ -6,8 +6,8 @@ import inspect
 import os
 import sys
 import unittest
+from collections.abc import Callable
 from types import ModuleType
-from typing import Callable, Dict, List, Optional, Tuple
 
 import launch
 
@@ -44,7 +44,7 @@ class TestRun:
     """One launch of the system under test and the tests that run against it."""
 
     def __init__(self, module: ModuleType, name: str, generate: Callable,
-                 param_args: Dict[str, object]) -> None:
+                 param_args: dict[str, object]) -> None:
         self.module = module
         self.name = name
         self._generate = generate
@@ -64,7 +64,7 @@ class TestRun:
         return self.name
 
     def generate_description(self, ready_fn: Callable[[], None]
-                             ) -> Tuple[launch.LaunchDescription, Dict[str, object]]:
+                             ) -> tuple[launch.LaunchDescription, dict[str, object]]:
         """Call generate_test_description; return (description, values for the tests)."""
         available = dict(self.param_args, ready_fn=ready_fn)
         parameters = inspect.signature(self._generate).parameters
@@ -75,7 +75,7 @@ class TestRun:
                 f"generate_test_description() of '{self.module.__file__}' takes "
                 f"{', '.join(missing)}, which no parametrize() gives")
         result = self._generate(**{p: available[p] for p in parameters if p in available})
-        extra: Dict[str, object] = {}
+        extra: dict[str, object] = {}
         if isinstance(result, tuple):
             if len(result) < 1 or not isinstance(result[0], launch.LaunchDescription):
                 raise LaunchTestError(self._bad_return(result))
@@ -97,7 +97,7 @@ class TestRun:
 
 
 def LoadTestsFromPythonModule(module: ModuleType, *,  # noqa: N802 - Jazzy's name
-                              name: Optional[str] = None) -> List[TestRun]:
+                              name: str | None = None) -> list[TestRun]:
     """The TestRuns of a module: one, or one per parametrize() value."""
     generate = getattr(module, 'generate_test_description', None)
     if generate is None or not callable(generate):
@@ -108,7 +108,7 @@ def LoadTestsFromPythonModule(module: ModuleType, *,  # noqa: N802 - Jazzy's nam
             for suffix, params in parameter_sets(generate)]
 
 
-def bind_test_args(suite: unittest.TestSuite, args: Dict[str, object]) -> None:
+def bind_test_args(suite: unittest.TestSuite, args: dict[str, object]) -> None:
     """Give each test method (and setUp/tearDown) the values its parameters name."""
     for test in _flatten(suite):
         for attribute in (test._testMethodName, 'setUp', 'tearDown'):
@@ -124,7 +124,7 @@ def bind_test_args(suite: unittest.TestSuite, args: Dict[str, object]) -> None:
                 setattr(test, key, args[key])
 
 
-def _bound(method: Callable, kwargs: Dict[str, object]) -> Callable:
+def _bound(method: Callable, kwargs: dict[str, object]) -> Callable:
     def call():
         return method(**kwargs)
     call.__name__ = method.__name__
@@ -132,8 +132,8 @@ def _bound(method: Callable, kwargs: Dict[str, object]) -> Callable:
     return call
 
 
-def _flatten(suite: unittest.TestSuite) -> List[unittest.TestCase]:
-    tests: List[unittest.TestCase] = []
+def _flatten(suite: unittest.TestSuite) -> list[unittest.TestCase]:
+    tests: list[unittest.TestCase] = []
     for item in suite:
         if isinstance(item, unittest.TestSuite):
             tests.extend(_flatten(item))

@@ -1,7 +1,8 @@
 """`parametrize(names, values)`: one launch test run per parameter set."""
 from __future__ import annotations
 
-from typing import Callable, Iterable, List, Tuple, TypeVar
+from collections.abc import Callable, Iterable
+from typing import TypeVar
 
 F = TypeVar('F', bound=Callable)
 
@@ -18,7 +19,7 @@ def parametrize(argnames: str, argvalues: Iterable) -> Callable[[F], F]:
     names = [name.strip() for name in argnames.split(',') if name.strip()]
     if not names:
         raise ValueError('parametrize: no parameter names given')
-    sets: List[dict] = []
+    sets: list[dict] = []
     for value in argvalues:
         values = (value,) if len(names) == 1 else tuple(value)
         if len(values) != len(names):
@@ -32,7 +33,7 @@ def parametrize(argnames: str, argvalues: Iterable) -> Callable[[F], F]:
     return decorator
 
 
-def parameter_sets(function: Callable) -> List[Tuple[str, dict]]:
+def parameter_sets(function: Callable) -> list[tuple[str, dict]]:
     """(name suffix, parameters) for each run; one unnamed run when not parametrized."""
     sets = getattr(function, _ATTRIBUTE, None)
     if sets is None:

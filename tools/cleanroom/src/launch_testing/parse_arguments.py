@@ -1,10 +1,8 @@
 """Launch arguments given on the launch_test command line."""
 from __future__ import annotations
 
-from typing import List, Tuple
 
-
-def parse_launch_arguments(launch_arguments: List[str]) -> List[Tuple[str, str]]:
+def parse_launch_arguments(launch_arguments: list[str]) -> list[tuple[str, str]]:
     """'<name>:=<value>' items as (name, value); anything else is an error."""
     parsed = []
     for argument in launch_arguments:

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import threading
 import time
-from typing import Dict, List, Optional
 
 from launch.actions import ExecuteProcess
 
@@ -18,8 +17,8 @@ class ProcInfoHandler:
     """
 
     def __init__(self) -> None:
-        self._events: Dict[int, object] = {}
-        self._actions: List[ExecuteProcess] = []
+        self._events: dict[int, object] = {}
+        self._actions: list[ExecuteProcess] = []
 
     def append(self, process_event) -> None:
         """Record a ProcessStarted or ProcessExited event."""
@@ -31,11 +30,11 @@ class ProcInfoHandler:
     def __iter__(self):
         return iter([self._events[id(a)] for a in self._actions])
 
-    def processes(self) -> List[ExecuteProcess]:
+    def processes(self) -> list[ExecuteProcess]:
         """The processes seen, in start order."""
         return list(self._actions)
 
-    def process_names(self) -> List[str]:
+    def process_names(self) -> list[str]:
         """Names of the processes seen."""
         return [str(a.process_details['name']) for a in self._actions]
 
@@ -56,7 +55,7 @@ class ActiveProcInfoHandler(ProcInfoHandler):
             super().append(process_event)
             self._condition.notify_all()
 
-    def processes(self) -> List[ExecuteProcess]:
+    def processes(self) -> list[ExecuteProcess]:
         with self._condition:
             return super().processes()
 
@@ -83,7 +82,7 @@ class ActiveProcInfoHandler(ProcInfoHandler):
         return all(getattr(self._events[id(p)], 'returncode', None) is not None
                    for p in processes)
 
-    def assertWaitForStartup(self, process=None, cmd_args: Optional[str] = None, *,
+    def assertWaitForStartup(self, process=None, cmd_args: str | None = None, *,
                              timeout: float = 10) -> None:
         """Fail unless the process has started within `timeout` seconds."""
         if not self._wait(lambda: bool(resolveProcesses(self, process=process,
@@ -91,7 +90,7 @@ class ActiveProcInfoHandler(ProcInfoHandler):
             raise AssertionError(f'Timed out waiting for process {_describe(process)} '
                                  'to start up')
 
-    def assertWaitForShutdown(self, process=None, cmd_args: Optional[str] = None, *,
+    def assertWaitForShutdown(self, process=None, cmd_args: str | None = None, *,
                               timeout: float = 10) -> None:
         """Fail unless the process has exited within `timeout` seconds."""
         if not self._wait(lambda: self._has_exited(process, cmd_args), timeout):

@@ -1,7 +1,8 @@
 """`ready_to_test_action_timeout(seconds)`: how long to wait for ReadyToTest."""
 from __future__ import annotations
 
-from typing import Callable, TypeVar
+from collections.abc import Callable
+from typing import TypeVar
 
 F = TypeVar('F', bound=Callable)
 

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import time
 import unittest
-from typing import Dict
 
 
 class TestResult(unittest.TextTestResult):
@@ -11,7 +10,7 @@ class TestResult(unittest.TextTestResult):
 
     def __init__(self, *args, **kwargs) -> None:
         super().__init__(*args, **kwargs)
-        self.testCaseTimes: Dict[unittest.TestCase, float] = {}
+        self.testCaseTimes: dict[unittest.TestCase, float] = {}
         self.__start = 0.0
 
     def startTest(self, test: unittest.TestCase) -> None:

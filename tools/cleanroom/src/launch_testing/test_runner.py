@@ -9,7 +9,7 @@ from __future__ import annotations
 import sys
 import threading
 import unittest
-from typing import Dict, List, Optional, Sequence, Tuple
+from collections.abc import Sequence
 
 import launch
 from launch.actions import RegisterEventHandler
@@ -53,9 +53,9 @@ class _SingleRun:
         self.proc_info = ActiveProcInfoHandler()
         self.proc_output = ActiveIoHandler()
         self.service = launch.LaunchService(argv=list(launch_args), debug=debug)
-        self.active_result: Optional[unittest.TestResult] = None
+        self.active_result: unittest.TestResult | None = None
 
-    def description(self) -> Tuple[launch.LaunchDescription, Dict[str, object]]:
+    def description(self) -> tuple[launch.LaunchDescription, dict[str, object]]:
         test_description, extra = self.test_run.generate_description(self.ready.set)
         add_ready_callback(self.service.context, self.ready.set)
         entities = [RegisterEventHandler(_Recorder(self.proc_info, self.proc_output)),
@@ -64,7 +64,7 @@ class _SingleRun:
             entities.append(KeepAliveProc())
         return launch.LaunchDescription(entities), extra
 
-    def run_active_tests(self, args: Dict[str, object]) -> None:
+    def run_active_tests(self, args: dict[str, object]) -> None:
         """Thread body: wait for ReadyToTest, run the active tests, stop the launch."""
         try:
             if not self.ready.wait(self.test_run.ready_timeout):
@@ -82,7 +82,7 @@ class _SingleRun:
 class LaunchTestRunner:
     """Runs each TestRun: launch, active tests, shutdown, post-shutdown tests."""
 
-    def __init__(self, test_runs: List[TestRun], launch_file_arguments: Sequence[str] = (),
+    def __init__(self, test_runs: list[TestRun], launch_file_arguments: Sequence[str] = (),
                  debug: bool = False) -> None:
         self._test_runs = test_runs
         self._launch_file_arguments = list(launch_file_arguments)
@@ -94,11 +94,11 @@ class LaunchTestRunner:
             if not callable(test_run._generate):
                 raise TypeError(f'{test_run}: generate_test_description is not callable')
 
-    def run(self) -> Dict[TestRun, Tuple[unittest.TestResult, unittest.TestResult]]:
+    def run(self) -> dict[TestRun, tuple[unittest.TestResult, unittest.TestResult]]:
         """Return, for each TestRun, (active results, post-shutdown results)."""
         return {test_run: self._run_one(test_run) for test_run in self._test_runs}
 
-    def _run_one(self, test_run: TestRun) -> Tuple[unittest.TestResult, unittest.TestResult]:
+    def _run_one(self, test_run: TestRun) -> tuple[unittest.TestResult, unittest.TestResult]:
         run = _SingleRun(test_run, self._launch_file_arguments, self._debug)
         description, extra = run.description()
         args = dict(extra, proc_info=run.proc_info, proc_output=run.proc_output,

@@ -8,7 +8,7 @@ from __future__ import annotations
 import collections
 import threading
 import uuid
-from typing import Callable, Deque, Dict, Iterable, List, Optional, Set, Tuple
+from collections.abc import Callable, Iterable
 
 import rclpy
 from rclpy.executors import SingleThreadedExecutor
@@ -24,9 +24,9 @@ class WaitForTopics:
     or `w = WaitForTopics(...); assert w.wait(); ...; w.shutdown()`.
     """
 
-    def __init__(self, topic_tuples: Iterable[Tuple[str, type]], timeout: float = 5.0,
+    def __init__(self, topic_tuples: Iterable[tuple[str, type]], timeout: float = 5.0,
                  messages_received_buffer_length: int = 10,
-                 trigger: Optional[Callable] = None, node_namespace: Optional[str] = None,
+                 trigger: Callable | None = None, node_namespace: str | None = None,
                  qos_profile=10) -> None:
         self.topic_tuples = list(topic_tuples)
         self.timeout = timeout
@@ -36,12 +36,12 @@ class WaitForTopics:
         self._buffer_length = messages_received_buffer_length
         self._lock = threading.Lock()
         self._all_received = threading.Event()
-        self._received: Dict[str, Deque] = {}
-        self._expected: Set[str] = {name for name, _ in self.topic_tuples}
-        self._context: Optional[rclpy.Context] = None
-        self._node: Optional[Node] = None
-        self._executor: Optional[SingleThreadedExecutor] = None
-        self._thread: Optional[threading.Thread] = None
+        self._received: dict[str, collections.deque] = {}
+        self._expected: set[str] = {name for name, _ in self.topic_tuples}
+        self._context: rclpy.Context | None = None
+        self._node: Node | None = None
+        self._executor: SingleThreadedExecutor | None = None
+        self._thread: threading.Thread | None = None
 
     def _start(self) -> None:
         self._context = rclpy.Context()
@@ -94,16 +94,16 @@ class WaitForTopics:
             self._thread.join(5.0)
         self._executor = self._node = self._context = self._thread = None
 
-    def topics_received(self) -> Set[str]:
+    def topics_received(self) -> set[str]:
         """Topics that received at least one message."""
         with self._lock:
             return set(self._received)
 
-    def topics_not_received(self) -> Set[str]:
+    def topics_not_received(self) -> set[str]:
         """Topics that did not receive any message."""
         return self._expected - self.topics_received()
 
-    def received_messages(self, topic_name: str) -> List:
+    def received_messages(self, topic_name: str) -> list:
         """The last messages (up to the buffer length) received on a topic."""
         if topic_name not in self._expected:
             raise KeyError(f"'{topic_name}' is not one of the topics being waited for")

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from typing import Any, List, Optional
+from typing import Any
 
 from launch.frontend.entity import (
     Entity as BaseEntity,
@@ -22,7 +22,7 @@ class Entity(BaseEntity):
     Reading is tracked so that attributes nobody read (typos) are reported.
     """
 
-    def __init__(self, xml_element: ET.Element, *, parent: Optional[BaseEntity] = None) -> None:
+    def __init__(self, xml_element: ET.Element, *, parent: BaseEntity | None = None) -> None:
         self.__element = xml_element
         self.__parent = parent
         self.__read_attributes: set = set()
@@ -33,12 +33,12 @@ class Entity(BaseEntity):
         return self.__element.tag
 
     @property
-    def parent(self) -> Optional[BaseEntity]:
+    def parent(self) -> BaseEntity | None:
         """The enclosing entity."""
         return self.__parent
 
     @property
-    def children(self) -> List[BaseEntity]:
+    def children(self) -> list[BaseEntity]:
         """Every child element."""
         return [Entity(child, parent=self) for child in self.__element]
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import io
 import xml.etree.ElementTree as ET
-from typing import Set, TextIO, Tuple, Union
+from typing import TextIO
 
 from launch import frontend
 
@@ -14,12 +14,12 @@ class Parser(frontend.Parser):
     """Reads XML with xml.etree; its errors (ParseError) reach the user unchanged."""
 
     @classmethod
-    def load(cls, file: Union[str, TextIO]) -> Tuple[Entity, Parser]:
+    def load(cls, file: str | TextIO) -> tuple[Entity, Parser]:
         """Return the root entity of the XML file and a parser for it."""
         source = file if isinstance(file, str) else io.StringIO(file.read())
         return Entity(ET.parse(source).getroot()), cls()
 
     @classmethod
-    def get_file_extensions(cls) -> Set[str]:
+    def get_file_extensions(cls) -> set[str]:
         """xml."""
         return {'xml'}

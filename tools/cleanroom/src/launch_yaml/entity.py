@@ -1,7 +1,7 @@
 """A YAML mapping seen as a launch front-end Entity."""
 from __future__ import annotations
 
-from typing import Any, List, Optional
+from typing import Any
 
 from launch.frontend.entity import (
     Entity as BaseEntity,
@@ -14,8 +14,8 @@ from launch.frontend.entity import (
 from launch.frontend.type_utils import get_typed_value
 
 
-def entities_of(items: Any, type_name: Optional[str], parent: Optional[BaseEntity]
-                ) -> List[Entity]:
+def entities_of(items: Any, type_name: str | None, parent: BaseEntity | None
+                ) -> list[Entity]:
     """Entities of a YAML list: `[{tag: {...}}, ...]`, or `[{...}]` all of `type_name`."""
     if not isinstance(items, list):
         raise TypeError(f'Expected a list of entities, got {type(items)}')
@@ -35,7 +35,7 @@ class Entity(BaseEntity):
     """Attributes are the keys of the mapping (already typed by YAML); children in `children`."""
 
     def __init__(self, element: Any, type_name: str, *,
-                 parent: Optional[BaseEntity] = None) -> None:
+                 parent: BaseEntity | None = None) -> None:
         if not isinstance(element, dict):
             raise TypeError(f"Entity '{type_name}' expected a mapping, got {type(element)}")
         self.__element = element
@@ -49,12 +49,12 @@ class Entity(BaseEntity):
         return self.__type_name
 
     @property
-    def parent(self) -> Optional[BaseEntity]:
+    def parent(self) -> BaseEntity | None:
         """The enclosing entity."""
         return self.__parent
 
     @property
-    def children(self) -> List[BaseEntity]:
+    def children(self) -> list[BaseEntity]:
         """The entities listed under `children:`."""
         self.__read_keys.add('children')
         return entities_of(self.__element.get('children', []), None, self)

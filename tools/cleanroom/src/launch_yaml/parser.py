@@ -1,7 +1,7 @@
 """The YAML front end: `.launch.yaml` files."""
 from __future__ import annotations
 
-from typing import Set, TextIO, Tuple, Union
+from typing import TextIO
 
 import yaml
 from launch import frontend
@@ -13,7 +13,7 @@ class Parser(frontend.Parser):
     """Reads YAML with PyYAML; the file holds one key, `launch`, with a list of entities."""
 
     @classmethod
-    def load(cls, file: Union[str, TextIO]) -> Tuple[Entity, Parser]:
+    def load(cls, file: str | TextIO) -> tuple[Entity, Parser]:
         """Return the root entity of the YAML file and a parser for it."""
         if isinstance(file, str):
             with open(file) as stream:
@@ -28,6 +28,6 @@ class Parser(frontend.Parser):
         return Entity({'children': body or []}, type_name), cls()
 
     @classmethod
-    def get_file_extensions(cls) -> Set[str]:
+    def get_file_extensions(cls) -> set[str]:
         """yaml and yml."""
         return {'yaml', 'yml'}

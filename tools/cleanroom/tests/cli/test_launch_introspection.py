@@ -11,7 +11,7 @@ from pathlib import Path
 import pytest
 
 # conformance case 01_basic_nodes, whose `ros2 launch -p` output is recorded
-BASIC_NODES = '''\
+BASIC_NODES = """\
 from launch import LaunchDescription
 from launch_ros.actions import Node
 
@@ -21,7 +21,7 @@ def generate_launch_description():
         Node(package='conf_pkg', executable='talker', name='sensor_publisher', output='screen'),
         Node(package='conf_pkg', executable='listener', name='data_processor', output='screen'),
     ])
-'''
+"""
 BASIC_NODES_PRINTED = re.escape(
     "├── ExecuteProcess(cmd=[ExecInPkg(pkg='conf_pkg', exec='talker'), '--ros-args', '-r', "
     "LocalVar('node name')], cwd=None, env=None, shell=False)\n"

@@ -3,7 +3,6 @@ from __future__ import annotations
 
 import io
 import xml.etree.ElementTree as ET
-from typing import List
 
 import pytest
 import yaml
@@ -34,7 +33,7 @@ def test_inferred_types_follow_yaml(text, expected):
 
 @pytest.mark.parametrize(('value', 'data_type', 'expected'), [
     ('12', str, '12'), ('12', int, 12), ('0.5', float, 0.5), ('TRUE', bool, True),
-    ('false', bool, False), (['1', '2'], List[int], [1, 2]), ('x', List[str], ['x']),
+    ('false', bool, False), (['1', '2'], list[int], [1, 2]), ('x', list[str], ['x']),
 ])
 def test_explicit_types(value, data_type, expected):
     assert get_typed_value(value, data_type) == expected
@@ -83,12 +82,12 @@ def test_xml_unread_attributes_are_reported():
 def test_xml_children_and_nested_entities():
     entity = xml('<node><param name="a"/><remap from="x" to="y"/><param name="b"/></node>')
     assert [child.type_name for child in entity.children] == ['param', 'remap', 'param']
-    params = entity.get_attr('param', data_type=List[Entity])
+    params = entity.get_attr('param', data_type=list[Entity])
     assert [p.get_attr('name') for p in params] == ['a', 'b']
     assert params[0].parent is entity
-    assert entity.get_attr('env', data_type=List[Entity], optional=True) is None
+    assert entity.get_attr('env', data_type=list[Entity], optional=True) is None
     with pytest.raises(AttributeError, match="Attribute 'env'"):
-        entity.get_attr('env', data_type=List[Entity])
+        entity.get_attr('env', data_type=list[Entity])
 
 
 def test_yaml_values_keep_their_yaml_type():
@@ -106,16 +105,16 @@ def test_yaml_numbers_read_as_text_when_text_is_asked_for():
 
 
 def test_yaml_children_and_nested_lists():
-    entity = yaml_entity('''
+    entity = yaml_entity("""
 group:
   scoped: false
   children:
   - log: {message: a}
   - node: {pkg: p, exec: e, param: [{name: x, value: 1}]}
-''')
+""")
     children = entity.children
     assert [c.type_name for c in children] == ['log', 'node']
-    params = children[1].get_attr('param', data_type=List[Entity])
+    params = children[1].get_attr('param', data_type=list[Entity])
     assert [p.type_name for p in params] == ['param']
     assert params[0].get_attr('value', data_type=None) == 1
     assert entity.get_attr('scoped', data_type=bool) is False

@@ -62,7 +62,7 @@ def test_empty_namespace_is_the_root(parser):
 
 
 def test_xml_params_are_typed_like_jazzy(parser):
-    _, kwargs = parse_node(xml('''
+    _, kwargs = parse_node(xml("""
         <node pkg="p" exec="t">
           <param name="a_str" value="hello"/>
           <param name="quoted" value="'42'"/>
@@ -74,7 +74,7 @@ def test_xml_params_are_typed_like_jazzy(parser):
           <param name="subst" value="$(var speed)"/>
           <param name="group"><param name="inner" value="0.1"/></param>
           <param from="/some/file.yaml"/>
-        </node>'''), parser)
+        </node>"""), parser)
     params = kwargs['parameters']
     assert params[:5] == [{'a_str': 'hello'}, {'quoted': '42'}, {'an_int': 7}, {'yes': True},
                           {'ints': [1, 2]}]
@@ -87,7 +87,7 @@ def test_xml_params_are_typed_like_jazzy(parser):
 
 
 def test_yaml_params_keep_yaml_types(parser):
-    _, kwargs = parse_node(yaml_entity('''
+    _, kwargs = parse_node(yaml_entity("""
 node:
   pkg: p
   exec: t
@@ -99,7 +99,7 @@ node:
   - {from: /f.yaml}
   remap:
   - {from: a, to: b}
-'''), parser)
+"""), parser)
     params = kwargs['parameters']
     assert params[:4] == [{'text_number': '42'}, {'text_bool': 'true'}, {'floats': [1.5, 2.0]},
                           {'group': {'inner': 1}}]
@@ -114,7 +114,7 @@ def test_unknown_param_type(parser):
 
 
 def test_unread_param_attribute_is_reported(parser):
-    with pytest.raises(ValueError, match=r"Unexpected attribute\(s\) found in `param`"):
+    with pytest.raises(ValueError, match=r'Unexpected attribute\(s\) found in `param`'):
         parse_node(xml('<node pkg="p" exec="t"><param name="x" value="1" vlaue="2"/></node>'),
                    parser)
 
@@ -137,11 +137,11 @@ def test_find_pkg_share_in_a_launch_file(write, run_file, tmp_path, monkeypatch)
     marker.parent.mkdir(parents=True)
     marker.write_text('')
     monkeypatch.setenv('AMENT_PREFIX_PATH', str(prefix))
-    path = write('s.launch.xml', '''
+    path = write('s.launch.xml', """
         <launch>
           <log message="share: $(find-pkg-share fe_share_pkg)"/>
           <log message="prefix: $(find-pkg-prefix fe_share_pkg)"/>
-        </launch>''')
+        </launch>""")
     assert run_file(path).user_lines() == [f'share: {prefix}/share/fe_share_pkg',
                                            f'prefix: {prefix}']
 

@@ -33,12 +33,12 @@ def texts(substitutions) -> list[str]:
 
 
 def test_args_defaults_and_command_line(write, run_file):
-    path = write('a.launch.xml', '''
+    path = write('a.launch.xml', """
         <launch>
           <arg name="robot" default="rover" description="Robot name"/>
           <arg name="speed" default="1.5"/>
           <log message="robot=$(var robot) speed=$(var speed)"/>
-        </launch>''')
+        </launch>""")
     assert run_file(path).user_lines() == ['robot=rover speed=1.5']
     assert run_file(path, 'robot:=scout').user_lines() == ['robot=scout speed=1.5']
     arguments = get_launch_description_from_any_launch_file(str(path)).get_launch_arguments()
@@ -47,29 +47,29 @@ def test_args_defaults_and_command_line(write, run_file):
 
 
 def test_required_arg_and_choices(write, run_file):
-    path = write('a.launch.yaml', '''
+    path = write('a.launch.yaml', """
         launch:
         - arg: {name: mode, choice: [{value: sim}, {value: real}]}
-        - log: {message: "mode $(var mode)"}''')
+        - log: {message: "mode $(var mode)"}""")
     arguments = get_launch_description_from_any_launch_file(str(path)).get_launch_arguments()
     assert arguments[0].choices == ['sim', 'real'] and arguments[0].default_value is None
     assert run_file(path, 'mode:=real').user_lines() == ['mode real']
 
 
 def test_if_unless_and_eval(write, run_file):
-    path = write('c.launch.xml', '''
+    path = write('c.launch.xml', """
         <launch>
           <arg name="on" default="true"/>
           <log message="if" if="$(var on)"/>
           <log message="unless" unless="$(var on)"/>
           <log message="eval" if="$(eval '&quot;$(var on)&quot; == &quot;true&quot;')"/>
-        </launch>''')
+        </launch>""")
     assert run_file(path).user_lines() == ['if', 'eval']
     assert run_file(path, 'on:=False').user_lines() == ['unless']
 
 
 def test_groups_scope_let_and_unscoped_groups_leak(write, run_file):
-    for name, text in (('g.launch.xml', '''
+    for name, text in (('g.launch.xml', """
         <launch>
           <let name="level" value="outer"/>
           <group><let name="level" value="inner"/><log message="in: $(var level)"/></group>
@@ -78,7 +78,7 @@ def test_groups_scope_let_and_unscoped_groups_leak(write, run_file):
           <log message="unscoped: $(var level)"/>
           <group scoped="maybe"><let name="level" value="maybe"/></group>
           <log message="maybe: $(var level)"/>
-        </launch>'''), ('g.launch.yaml', '''
+        </launch>"""), ('g.launch.yaml', """
         launch:
         - let: {name: level, value: outer}
         - group:
@@ -89,20 +89,20 @@ def test_groups_scope_let_and_unscoped_groups_leak(write, run_file):
         - group: {scoped: false, children: [{let: {name: level, value: leaked}}]}
         - log: {message: "unscoped: $(var level)"}
         - group: {scoped: maybe, children: [{let: {name: level, value: maybe}}]}
-        - log: {message: "maybe: $(var level)"}''')):
+        - log: {message: "maybe: $(var level)"}""")):
         assert run_file(write(name, text)).user_lines() == [
             'in: inner', 'scoped: outer', 'unscoped: leaked', 'maybe: leaked'], name
 
 
 def test_environment_tags(write, run_file):
-    path = write('e.launch.xml', '''
+    path = write('e.launch.xml', """
         <launch>
           <set_env name="FE_VAR" value="one"/>
           <append_env name="FE_VAR" value="two" separator=","/>
           <log message="env: $(env FE_VAR none)"/>
           <unset_env name="FE_VAR"/>
           <log message="after: $(env FE_VAR none)"/>
-        </launch>''')
+        </launch>""")
     assert run_file(path).user_lines() == ['env: one,two', 'after: none']
     assert isinstance(parse_xml_action('<set_env name="a" value="b"/>'), SetEnvironmentVariable)
     assert isinstance(parse_xml_action('<append_env name="a" value="b" prepend="true"/>'),
@@ -110,22 +110,22 @@ def test_environment_tags(write, run_file):
 
 
 def test_timer_runs_its_children_later(write, run_file):
-    path = write('t.launch.yaml', '''
+    path = write('t.launch.yaml', """
         launch:
         - timer:
             period: 0.1
             children:
             - log: {message: fired}
-        - log: {message: first}''')
+        - log: {message: first}""")
     assert run_file(path).user_lines() == ['first', 'fired']
 
 
 def test_timer_period_may_be_a_substitution(write, run_file):
-    path = write('t.launch.xml', '''
+    path = write('t.launch.xml', """
         <launch>
           <arg name="p" default="0.05"/>
           <timer period="$(var p)"><log message="fired"/></timer>
-        </launch>''')
+        </launch>""")
     assert run_file(path).user_lines() == ['fired']
 
 
@@ -147,16 +147,16 @@ def test_other_tags(write):
 
 
 def test_xml_includes_xml_with_arguments_that_stay_set(write, run_file):
-    write('sub/child.launch.xml', '''
+    write('sub/child.launch.xml', """
         <launch>
           <arg name="who" default="nobody"/>
           <log message="child for $(var who) in $(dirname)"/>
-        </launch>''')
-    path = write('parent.launch.xml', '''
+        </launch>""")
+    path = write('parent.launch.xml', """
         <launch>
           <include file="$(dirname)/sub/child.launch.xml"><arg name="who" value="kid"/></include>
           <log message="after: $(var who) $(dirname)"/>
-        </launch>''')
+        </launch>""")
     sub = path.parent / 'sub'
     assert run_file(path).user_lines() == [f'child for kid in {sub}', f'after: kid {sub}']
 
@@ -164,7 +164,7 @@ def test_xml_includes_xml_with_arguments_that_stay_set(write, run_file):
 def test_yaml_includes_python_and_python_includes_xml_and_yaml(write, run_file):
     write('xml_child.launch.xml', '<launch><log message="xml child $(var n)"/></launch>')
     write('yaml_child.launch.yaml', 'launch:\n- log: {message: "yaml child $(var n)"}\n')
-    write('py_child.launch.py', '''
+    write('py_child.launch.py', """
         from launch import LaunchDescription
         from launch.actions import IncludeLaunchDescription, LogInfo
         from launch.launch_description_sources import AnyLaunchDescriptionSource
@@ -182,12 +182,12 @@ def test_yaml_includes_python_and_python_includes_xml_and_yaml(write, run_file):
                     [ThisLaunchFileDir(), '/yaml_child.launch.yaml']),
                     launch_arguments=[('n', '3')]),
             ])
-        ''')
-    path = write('top.launch.yaml', '''
+        """)
+    path = write('top.launch.yaml', """
         launch:
         - include:
             file: $(dirname)/py_child.launch.py
-            arg: [{name: n, value: "1"}]''')
+            arg: [{name: n, value: "1"}]""")
     assert run_file(path).user_lines() == ['python child 1', 'xml child 2', 'yaml child 3']
 
 
@@ -198,7 +198,7 @@ def test_explicit_front_end_sources(write, run_file, tmp_path):
     assert YAMLLaunchDescriptionSource(str(yaml_path)).method == 'interpreted YAML launch file'
     source = FrontendLaunchDescriptionSource(str(xml_path))
     assert source.method == 'interpreted frontend launch file'
-    python = write('p.launch.py', f'''
+    python = write('p.launch.py', f"""
         from launch import LaunchDescription
         from launch.actions import IncludeLaunchDescription
         from launch.launch_description_sources import FrontendLaunchDescriptionSource
@@ -210,5 +210,5 @@ def test_explicit_front_end_sources(write, run_file, tmp_path):
                 IncludeLaunchDescription(FrontendLaunchDescriptionSource({str(xml_path)!r})),
                 IncludeLaunchDescription(YAMLLaunchDescriptionSource({str(yaml_path)!r})),
             ])
-        ''')
+        """)
     assert run_file(python).user_lines() == ['x', 'y']

@@ -118,10 +118,10 @@ def test_undeclared_var_fails_when_run(write, run_file):
 
 
 def test_invalid_choice_fails_when_run(write, run_file):
-    path = write('c.launch.xml', '''
+    path = write('c.launch.xml', """
         <launch>
           <arg name="mode" default="sim"><choice value="sim"/><choice value="real"/></arg>
-        </launch>''')
+        </launch>""")
     result = run_file(path, 'mode:=fly')
     assert result.returncode == 1
     assert ('[ERROR] [launch.actions.declare_launch_argument]: Argument "mode" provided value '

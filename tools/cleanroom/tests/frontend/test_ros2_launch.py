@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import textwrap
 
-ARGS_XML = '''
+ARGS_XML = """
 <launch>
   <arg name="robot" default="rover" description="Robot name"/>
   <arg name="mode" default="sim">
@@ -12,14 +12,14 @@ ARGS_XML = '''
   </arg>
   <log message="robot=$(var robot) mode=$(var mode)"/>
 </launch>
-'''
+"""
 
-ARGS_YAML = '''
+ARGS_YAML = """
 launch:
 - arg: {name: robot, default: rover, description: Robot name}
 - arg: {name: speed}
 - log: {message: "robot=$(var robot) speed=$(var speed)"}
-'''
+"""
 
 
 def install(ros2, name: str, text: str):

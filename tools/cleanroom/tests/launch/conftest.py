@@ -141,9 +141,9 @@ def fake_prefix(tmp_path_factory: pytest.TempPathFactory) -> Path:
     _write(prefix / 'lib/cr_pkg/echo_args', '#!/bin/sh\necho "args: $*"\n', executable=True)
     _write(prefix / 'lib/cr_pkg/exit_with', '#!/bin/sh\nexit "$1"\n', executable=True)
     _write(prefix / 'lib/cr_pkg/wait_for_signal',
-           '#!/bin/sh\ntrap \'echo got INT; exit 0\' INT\ntrap \'echo got TERM; exit 0\' TERM\n'
+           "#!/bin/sh\ntrap 'echo got INT; exit 0' INT\ntrap 'echo got TERM; exit 0' TERM\n"
            'echo ready\nwhile :; do sleep 0.05; done\n', executable=True)
-    _write(prefix / 'share/cr_pkg/launch/args.launch.py', '''
+    _write(prefix / 'share/cr_pkg/launch/args.launch.py', """
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, LogInfo
 from launch.substitutions import LaunchConfiguration
@@ -157,8 +157,8 @@ def generate_launch_description():
         LogInfo(msg=['speed=', LaunchConfiguration('speed'), ' mode=',
                      LaunchConfiguration('mode'), ' name=', LaunchConfiguration('name')]),
     ])
-''')
-    _write(prefix / 'share/cr_pkg/launch/procs.launch.py', '''
+""")
+    _write(prefix / 'share/cr_pkg/launch/procs.launch.py', """
 import sys
 from launch import LaunchDescription
 from launch.actions import ExecuteProcess
@@ -169,7 +169,7 @@ def generate_launch_description():
         ExecuteProcess(cmd=['sleep', '30'], name='sleeper') for _ in range(3)
     ] + [ExecuteProcess(cmd=[sys.executable, '-c', 'print("hello", flush=True)'],
                         name='hello', output='screen')])
-''')
+""")
     return prefix
 
 

@@ -33,7 +33,7 @@ def _file(tmp_path, name, body):
     return str(path)
 
 
-CHILD = '''
+CHILD = """
     from launch import LaunchDescription
     from launch.actions import DeclareLaunchArgument
     from launch.conditions import IfCondition
@@ -44,7 +44,7 @@ CHILD = '''
             DeclareLaunchArgument('rate', description='Publishing rate in Hz'),
             DeclareLaunchArgument('optional', condition=IfCondition('false')),
         ])
-'''
+"""
 
 
 def test_missing_required_argument_of_an_include(run_launch, tmp_path):
@@ -94,12 +94,12 @@ def test_undeclared_configuration(run_launch):
 
 
 def test_syntax_error_is_reported_like_python(run_launch, tmp_path):
-    path = _file(tmp_path, 'broken.launch.py', '''
+    path = _file(tmp_path, 'broken.launch.py', """
         def generate_launch_description():
             return [
                 (1, 2
             ]
-    ''')
+    """)
     result = run_launch([IncludeLaunchDescription(PythonLaunchDescriptionSource(path))])
     assert _error(result) == ("closing parenthesis ']' does not match opening parenthesis '(' "
                               'on line 4 (broken.launch.py, line 5)')
@@ -130,7 +130,7 @@ def test_exception_in_a_timer_stops_running_processes(run_launch):
     ], debug=True)
     assert _error(result) == 'late failure'
     assert 'Traceback (most recent call last)' in result.output  # debug mode shows it
-    assert "[ERROR] [victim-1]: process has died" in result.output
+    assert '[ERROR] [victim-1]: process has died' in result.output
     assert result.returncode == 1
 
 

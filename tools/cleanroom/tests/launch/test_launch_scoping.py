@@ -99,7 +99,7 @@ def test_processes_get_scoped_environment_plus_additional_env(run_launch):
 
 def _child_file(tmp_path):
     child = tmp_path / 'child.launch.py'
-    child.write_text(textwrap.dedent('''
+    child.write_text(textwrap.dedent("""
         from launch import LaunchDescription
         from launch.actions import DeclareLaunchArgument, LogInfo
         from launch.substitutions import LaunchConfiguration, ThisLaunchFile
@@ -111,7 +111,7 @@ def _child_file(tmp_path):
                 LogInfo(msg=[LaunchConfiguration('who'), ' ', LaunchConfiguration('rate'),
                              ' ', ThisLaunchFile()]),
             ])
-    '''))
+    """))
     return child
 
 
@@ -139,7 +139,7 @@ def test_this_launch_file_after_an_include_names_the_included_file(run_launch, t
     # Jazzy does not restore the locals after an include (frontends golden 33_xml_include).
     child = _child_file(tmp_path)
     parent = tmp_path / 'parent.launch.py'
-    parent.write_text(textwrap.dedent(f'''
+    parent.write_text(textwrap.dedent(f"""
         from launch import LaunchDescription
         from launch.actions import IncludeLaunchDescription, LogInfo, TimerAction
         from launch.launch_description_sources import PythonLaunchDescriptionSource
@@ -152,7 +152,7 @@ def test_this_launch_file_after_an_include_names_the_included_file(run_launch, t
                 LogInfo(msg=['parent ', ThisLaunchFile()]),
                 TimerAction(period=0.01, actions=[LogInfo(msg=['timer ', ThisLaunchFile()])]),
             ])
-    '''))
+    """))
     result = run_launch([IncludeLaunchDescription(PythonLaunchDescriptionSource(str(parent)))])
     assert result.user_lines() == [f'child 3 {child}', f'parent {child}', f'timer {child}']
 

@@ -1,6 +1,5 @@
 """Node parameters: temp files, keys, typing, parameter files (goldens 02-04, 13, 25)."""
 import os
-from typing import List
 
 import pytest
 from launch.actions import DeclareLaunchArgument
@@ -57,7 +56,7 @@ def test_substitution_values_are_typed_by_yaml(test_package, run_launch):
         'label': [TextSubstitution(text='robot_'), lc('flag')],
         'serial_str': ParameterValue(lc('serial'), value_type=str),
         'ratio_f': ParameterValue(lc('count'), value_type=float),
-        'ids_f': ParameterValue(lc('ids'), value_type=List[float]),
+        'ids_f': ParameterValue(lc('ids'), value_type=list[float]),
         'as_text': ParameterValue('[1, 2, 3]'),
         'pair': [[lc('count')], [lc('ratio')]],
         'concat': [lc('count'), lc('ratio')],

@@ -1,5 +1,4 @@
 """Parameter typing: YAML 1.1 for substitution text, Python types kept (goldens 02, 07, 13, 28)."""
-from typing import List
 
 import pytest
 from launch_ros.utilities.parameter_values import (
@@ -33,7 +32,7 @@ def test_coerce_text_with_value_type():
     assert coerce_text('1', float) == 1.0 and isinstance(coerce_text('1', float), float)
     assert coerce_text('2.5', float) == 2.5
     assert coerce_text('true', bool) is True
-    assert coerce_text('[1, 2]', List[float]) == [1.0, 2.0]
+    assert coerce_text('[1, 2]', list[float]) == [1.0, 2.0]
     assert coerce_text('5', int) == 5
 
 
@@ -54,9 +53,9 @@ def test_coerce_value_accepts_int_for_float_but_not_bool_for_int():
     assert coerce_value(3, float) == 3.0 and isinstance(coerce_value(3, float), float)
     with pytest.raises(TypeError):
         coerce_value(True, int)
-    assert coerce_value([1, 2], List[int]) == [1, 2]
+    assert coerce_value([1, 2], list[int]) == [1, 2]
     with pytest.raises(TypeError):
-        coerce_value(['a'], List[int])
+        coerce_value(['a'], list[int])
 
 
 def test_plain_python_value_keeps_types():

@@ -1,8 +1,6 @@
 """Where a process's output goes: lines to screen/log files, and an optional cache."""
 from __future__ import annotations
 
-from typing import Dict, List
-
 from ..logging import get_output_loggers
 
 
@@ -16,9 +14,9 @@ class ProcessOutput:
 
     def __init__(self, process_name: str, output: str, cached: bool) -> None:
         self.__writers = get_output_loggers(process_name, output)
-        self.__buffers: Dict[int, bytes] = {}
+        self.__buffers: dict[int, bytes] = {}
         self.__cached = cached
-        self.__cache: Dict[int, List[str]] = {1: [], 2: []}
+        self.__cache: dict[int, list[str]] = {1: [], 2: []}
 
     def write(self, fd: int, data: bytes) -> None:
         """Take a chunk from stdout (fd 1) or stderr (fd 2)."""

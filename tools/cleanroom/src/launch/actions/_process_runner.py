@@ -21,13 +21,13 @@ import pty
 import signal
 import subprocess
 import threading
-from typing import Callable, Dict, List, Optional
+from collections.abc import Callable
 
 _PR_SET_PDEATHSIG = 1
 _EXIT_GRACE_SECONDS = 0.5  # how long to wait for pipes held open by grandchildren
 
 try:
-    _libc: Optional[ctypes.CDLL] = ctypes.CDLL(None, use_errno=True)
+    _libc: ctypes.CDLL | None = ctypes.CDLL(None, use_errno=True)
 except OSError:  # pragma: no cover - not Linux/glibc
     _libc = None
 
@@ -47,8 +47,8 @@ class RunningProcess:
     is called once, after the remaining output has been delivered.
     """
 
-    def __init__(self, loop: asyncio.AbstractEventLoop, cmd: List[str], *,
-                 cwd: Optional[str], env: Dict[str, str], shell: bool, emulate_tty: bool,
+    def __init__(self, loop: asyncio.AbstractEventLoop, cmd: list[str], *,
+                 cwd: str | None, env: dict[str, str], shell: bool, emulate_tty: bool,
                  on_output: Callable[[int, bytes], None],
                  on_exit: Callable[[int], None]) -> None:
         self._loop = loop
@@ -59,13 +59,13 @@ class RunningProcess:
         self._emulate_tty = emulate_tty
         self._on_output = on_output
         self._on_exit = on_exit
-        self._popen: Optional[subprocess.Popen] = None
-        self._readers: Dict[int, int] = {}  # our fd -> child's fd number (1 or 2)
-        self._pidfd: Optional[int] = None
-        self._returncode: Optional[int] = None
+        self._popen: subprocess.Popen | None = None
+        self._readers: dict[int, int] = {}  # our fd -> child's fd number (1 or 2)
+        self._pidfd: int | None = None
+        self._returncode: int | None = None
         self._finished = False
-        self._grace: Optional[asyncio.TimerHandle] = None
-        self._spawned_fds: List[int] = []
+        self._grace: asyncio.TimerHandle | None = None
+        self._spawned_fds: list[int] = []
 
     @property
     def pid(self) -> int:
@@ -74,7 +74,7 @@ class RunningProcess:
         return self._popen.pid
 
     @property
-    def returncode(self) -> Optional[int]:
+    def returncode(self) -> int | None:
         """The exit code once the child has exited."""
         return self._returncode
 
@@ -95,8 +95,8 @@ class RunningProcess:
         live as long as the launch: the death signal follows the thread that
         started the child).  Call attach() on the loop's thread afterwards.
         """
-        parents: List[int] = []
-        children: List[int] = []
+        parents: list[int] = []
+        children: list[int] = []
         for _ in (1, 2):
             if self._emulate_tty:
                 parent_fd, child_fd = pty.openpty()

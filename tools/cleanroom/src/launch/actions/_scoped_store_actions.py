@@ -5,7 +5,8 @@ scoping pushes and pops; their Set/Unset actions differ only in the store.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, MutableMapping
+from collections.abc import MutableMapping
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..substitution import Substitution
@@ -32,12 +33,12 @@ class SetInStore(_StoreAction):
         self._value = normalize_to_list_of_substitutions(value)
 
     @property
-    def name(self) -> List[Substitution]:
+    def name(self) -> list[Substitution]:
         """The name, as substitutions."""
         return self._name
 
     @property
-    def value(self) -> List[Substitution]:
+    def value(self) -> list[Substitution]:
         """The value, as substitutions."""
         return self._value
 
@@ -55,7 +56,7 @@ class UnsetInStore(_StoreAction):
         self._name = normalize_to_list_of_substitutions(name)
 
     @property
-    def name(self) -> List[Substitution]:
+    def name(self) -> list[Substitution]:
         """The name, as substitutions."""
         return self._name
 

@@ -1,7 +1,8 @@
 """Declare a launch argument: a launch configuration users may set from outside."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Iterable, List, Optional
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..logging import get_logger
@@ -20,9 +21,9 @@ class DeclareLaunchArgument(Action):
     be one of them.  `ros2 launch --show-args` lists these declarations.
     """
 
-    def __init__(self, name: str, *, default_value: Optional[SomeSubstitutionsType] = None,
-                 description: Optional[str] = None,
-                 choices: Optional[Iterable[str]] = None, **kwargs: object) -> None:
+    def __init__(self, name: str, *, default_value: SomeSubstitutionsType | None = None,
+                 description: str | None = None,
+                 choices: Iterable[str] | None = None, **kwargs: object) -> None:
         super().__init__(**kwargs)
         if not isinstance(name, str):
             raise TypeError(f"DeclareLaunchArgument expected 'name' to be a str, "
@@ -50,7 +51,7 @@ class DeclareLaunchArgument(Action):
         return self.__name
 
     @property
-    def default_value(self) -> Optional[List[Substitution]]:
+    def default_value(self) -> list[Substitution] | None:
         """The default, as substitutions, or None when required."""
         return self.__default_value
 
@@ -60,7 +61,7 @@ class DeclareLaunchArgument(Action):
         return self.__description
 
     @property
-    def choices(self) -> Optional[List[str]]:
+    def choices(self) -> list[str] | None:
         """The allowed values, or None."""
         return self.__choices
 

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, List, MutableMapping
+from collections.abc import MutableMapping
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
@@ -15,7 +16,7 @@ if TYPE_CHECKING:
     from ..some_substitutions_type import SomeSubstitutionsType
 
 
-def _subs(value: object) -> List[Substitution]:
+def _subs(value: object) -> list[Substitution]:
     return normalize_to_list_of_substitutions(value)
 
 
@@ -46,12 +47,12 @@ class AppendEnvironmentVariable(Action):
         self.__separator = _subs(separator)
 
     @property
-    def name(self) -> List[Substitution]:
+    def name(self) -> list[Substitution]:
         """The variable name, as substitutions."""
         return self.__name
 
     @property
-    def value(self) -> List[Substitution]:
+    def value(self) -> list[Substitution]:
         """The value, as substitutions."""
         return self.__value
 

@@ -1,7 +1,8 @@
 """Register or unregister an event handler, and emit events."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Sequence, Tuple
+from collections.abc import Sequence
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..event import Event
@@ -29,7 +30,7 @@ class RegisterEventHandler(Action):
         return self.__event_handler
 
     def describe_conditional_sub_entities(
-            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+            self) -> list[tuple[str, Sequence[LaunchDescriptionEntity]]]:
         """The entities the handler may produce."""
         text, entities = self.__event_handler.describe()
         return [(text, entities)] if entities else []

@@ -6,16 +6,9 @@ import os
 import re
 import shlex
 import signal
+from collections.abc import Iterable, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
-    Dict,
-    Iterable,
-    List,
-    Mapping,
-    Optional,
-    Sequence,
-    Tuple,
-    Union,
 )
 
 from ..action import Action
@@ -44,7 +37,7 @@ if TYPE_CHECKING:
     from ..launch_context import LaunchContext
     from ..some_substitutions_type import SomeSubstitutionsType
 
-SubstitutionsList = List[Substitution]
+SubstitutionsList = list[Substitution]
 
 # Overridable from the command line, e.g. `ros2 launch ... sigterm_timeout:=10`.
 _DEFAULT_SIGTERM_TIMEOUT = LaunchConfiguration('sigterm_timeout', default=5)
@@ -59,7 +52,7 @@ def _perform(context: LaunchContext, subs: SubstitutionsList) -> str:
     return perform_substitutions(context, subs)
 
 
-def _flag(context: LaunchContext, value: Union[bool, SubstitutionsList]) -> bool:
+def _flag(context: LaunchContext, value: bool | SubstitutionsList) -> bool:
     return value if isinstance(value, bool) else evaluate_condition_expression(context, value)
 
 
@@ -97,29 +90,29 @@ class ExecuteProcess(Action):
     def __init__(
         self, *,
         cmd: Iterable[SomeSubstitutionsType],
-        prefix: Optional[SomeSubstitutionsType] = None,
-        name: Optional[SomeSubstitutionsType] = None,
-        cwd: Optional[SomeSubstitutionsType] = None,
-        env: Optional[Union[Mapping, Iterable[Tuple]]] = None,
-        additional_env: Optional[Union[Mapping, Iterable[Tuple]]] = None,
+        prefix: SomeSubstitutionsType | None = None,
+        name: SomeSubstitutionsType | None = None,
+        cwd: SomeSubstitutionsType | None = None,
+        env: Mapping | Iterable[tuple] | None = None,
+        additional_env: Mapping | Iterable[tuple] | None = None,
         shell: bool = False,
         sigterm_timeout: SomeSubstitutionsType = _DEFAULT_SIGTERM_TIMEOUT,
         sigkill_timeout: SomeSubstitutionsType = _DEFAULT_SIGKILL_TIMEOUT,
-        emulate_tty: Union[bool, SomeSubstitutionsType] = False,
+        emulate_tty: bool | SomeSubstitutionsType = False,
         output: SomeSubstitutionsType = 'log',
         output_format: str = '[{this.process_description.final_name}] {line}',
         cached_output: bool = False,
         log_cmd: bool = False,
         on_exit: object = None,
-        respawn: Union[bool, SomeSubstitutionsType] = False,
-        respawn_delay: Optional[float] = None,
+        respawn: bool | SomeSubstitutionsType = False,
+        respawn_delay: float | None = None,
         respawn_max_retries: int = -1,
         **kwargs: object,
     ) -> None:
         super().__init__(**kwargs)
         if isinstance(cmd, (str, Substitution)):
             cmd = [cmd]
-        self.__cmd: List[SubstitutionsList] = [_subs(token) for token in cmd]
+        self.__cmd: list[SubstitutionsList] = [_subs(token) for token in cmd]
         self.__prefix = None if prefix is None else _subs(prefix)
         self.__name = None if name is None else _subs(name)
         self.__cwd = None if cwd is None else _subs(cwd)
@@ -140,31 +133,31 @@ class ExecuteProcess(Action):
         self.__respawn_delay = respawn_delay
         self.__respawn_max_retries = respawn_max_retries
         # state once executed
-        self.__context: Optional[LaunchContext] = None
-        self.__final_name: Optional[str] = None
-        self.__final_cmd: Optional[List[str]] = None
-        self.__final_cwd: Optional[str] = None
-        self.__final_env: Optional[Dict[str, str]] = None
-        self.__process: Optional[RunningProcess] = None
-        self.__future: Optional[asyncio.Future] = None
-        self.__events_handler: Optional[_ProcessEvents] = None
+        self.__context: LaunchContext | None = None
+        self.__final_name: str | None = None
+        self.__final_cmd: list[str] | None = None
+        self.__final_cwd: str | None = None
+        self.__final_env: dict[str, str] | None = None
+        self.__process: RunningProcess | None = None
+        self.__future: asyncio.Future | None = None
+        self.__events_handler: _ProcessEvents | None = None
         self.__shutdown_requested = False
-        self.__stop_requested: Optional[bool] = None
-        self.__timers: List[asyncio.TimerHandle] = []
-        self.__respawn_handle: Optional[asyncio.TimerHandle] = None
+        self.__stop_requested: bool | None = None
+        self.__timers: list[asyncio.TimerHandle] = []
+        self.__respawn_handle: asyncio.TimerHandle | None = None
         self.__respawn_count = 0
-        self.__output_handler: Optional[ProcessOutput] = None
+        self.__output_handler: ProcessOutput | None = None
         self.__logger = None
 
     @staticmethod
-    def __pairs(env: Union[Mapping, Iterable[Tuple]]) -> List[Tuple[SubstitutionsList,
+    def __pairs(env: Mapping | Iterable[tuple]) -> list[tuple[SubstitutionsList,
                                                                       SubstitutionsList]]:
         items = env.items() if isinstance(env, Mapping) else env
         return [(_subs(k), _subs(v)) for k, v in items]
 
     # --- public properties --------------------------------------------------
     @property
-    def cmd(self) -> List[SubstitutionsList]:
+    def cmd(self) -> list[SubstitutionsList]:
         """The command; a mutable list of argument substitution lists."""
         return self.__cmd
 
@@ -174,22 +167,22 @@ class ExecuteProcess(Action):
         return self.__final_name if self.__final_name is not None else self.__name
 
     @property
-    def prefix(self) -> Optional[SubstitutionsList]:
+    def prefix(self) -> SubstitutionsList | None:
         """The prefix command, as substitutions."""
         return self.__prefix
 
     @property
-    def cwd(self) -> Optional[SubstitutionsList]:
+    def cwd(self) -> SubstitutionsList | None:
         """The working directory, as substitutions."""
         return self.__cwd
 
     @property
-    def env(self) -> Optional[List[Tuple[SubstitutionsList, SubstitutionsList]]]:
+    def env(self) -> list[tuple[SubstitutionsList, SubstitutionsList]] | None:
         """The replacement environment, as substitution pairs."""
         return self.__env
 
     @property
-    def additional_env(self) -> Optional[List[Tuple[SubstitutionsList, SubstitutionsList]]]:
+    def additional_env(self) -> list[tuple[SubstitutionsList, SubstitutionsList]] | None:
         """Variables added to the environment, as substitution pairs."""
         return self.__additional_env
 
@@ -204,7 +197,7 @@ class ExecuteProcess(Action):
         return self.__output
 
     @property
-    def process_details(self) -> Optional[Dict[str, object]]:
+    def process_details(self) -> dict[str, object] | None:
         """name, cmd, cwd, env and pid of the started process (None before start)."""
         if self.__final_name is None:
             return None
@@ -213,7 +206,7 @@ class ExecuteProcess(Action):
                 'pid': self.__process.pid if self.__process is not None else None}
 
     @property
-    def return_code(self) -> Optional[int]:
+    def return_code(self) -> int | None:
         """The exit code of the last run, if it has exited."""
         return self.__process.returncode if self.__process is not None else None
 
@@ -241,23 +234,23 @@ class ExecuteProcess(Action):
             '{' + ', '.join(f'{join(k)}: {join(v)}' for k, v in self.__env) + '}'
         return f'ExecuteProcess(cmd=[{cmd}], cwd={cwd}, env={env}, shell={self.__shell})'
 
-    def _described_cmd(self) -> List[SubstitutionsList]:
+    def _described_cmd(self) -> list[SubstitutionsList]:
         """The command as described before execution (Node adds its name arguments)."""
         return self.__cmd
 
     def describe_conditional_sub_entities(
-            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+            self) -> list[tuple[str, Sequence[LaunchDescriptionEntity]]]:
         """The on_exit entities, if any."""
         if self.__on_exit is None or callable(self.__on_exit):
             return []
         return [('on exit', normalize_entities(self.__on_exit))]
 
-    def get_asyncio_future(self) -> Optional[asyncio.Future]:
+    def get_asyncio_future(self) -> asyncio.Future | None:
         """Done when the process has exited for good (no respawn pending)."""
         return self.__future
 
     # --- execution ------------------------------------------------------------
-    def execute(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Expand the command and start the process."""
         if context.is_shutdown:
             return None
@@ -296,7 +289,7 @@ class ExecuteProcess(Action):
         self.__output_handler = ProcessOutput(self.__final_name, _perform(context, self.__output),
                                               self.__cached_output)
 
-    def __prefix_words(self, context: LaunchContext, executable: str) -> List[str]:
+    def __prefix_words(self, context: LaunchContext, executable: str) -> list[str]:
         if self.__prefix is not None:
             return shlex.split(_perform(context, self.__prefix))
         prefix = context.launch_configurations.get('launch-prefix', '')
@@ -339,7 +332,7 @@ class ExecuteProcess(Action):
         if self.__stop_requested is not None:  # shutdown came while the process was starting
             self.__stop(context, self.__stop_requested)
 
-    def __event_fields(self) -> Dict[str, object]:
+    def __event_fields(self) -> dict[str, object]:
         return {'action': self, 'name': self.__final_name, 'cmd': self.__final_cmd,
                 'cwd': self.__final_cwd, 'env': self.__final_env,
                 'pid': self.__process.pid if self.__process is not None else 0}

@@ -1,7 +1,8 @@
 """Group actions, optionally in their own scope of configurations and environment."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Dict, Iterable, List, Optional
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..launch_description_entity import LaunchDescriptionEntity
@@ -30,8 +31,8 @@ class GroupAction(Action):
 
     def __init__(self, actions: Iterable[Action], *, scoped: bool = True,
                  forwarding: bool = True,
-                 launch_configurations: Optional[
-                     Dict[SomeSubstitutionsType, SomeSubstitutionsType]] = None,
+                 launch_configurations: (dict[SomeSubstitutionsType, SomeSubstitutionsType]
+                                         | None) = None,
                  **kwargs: object) -> None:
         super().__init__(**kwargs)
         self.__actions = list(actions)
@@ -40,7 +41,7 @@ class GroupAction(Action):
         self.__launch_configurations = dict(launch_configurations or {})
 
     @property
-    def actions(self) -> List[Action]:
+    def actions(self) -> list[Action]:
         """The grouped actions."""
         return self.__actions
 
@@ -48,24 +49,24 @@ class GroupAction(Action):
         """Return a description."""
         return f'GroupAction(scoped={self.__scoped}, forwarding={self.__forwarding})'
 
-    def get_sub_entities(self) -> List[LaunchDescriptionEntity]:
+    def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """The entities visited for this group, scoping actions included."""
         if not self.__scoped:
             return [*self.__set_configurations(), *self.__actions]
         if self.__forwarding:
-            inner: List[LaunchDescriptionEntity] = [*self.__set_configurations(), *self.__actions]
+            inner: list[LaunchDescriptionEntity] = [*self.__set_configurations(), *self.__actions]
         else:
             inner = [ResetLaunchConfigurations(self.__launch_configurations), *self.__actions]
         return [PushLaunchConfigurations(), PushEnvironment(), *inner,
                 PopEnvironment(), PopLaunchConfigurations()]
 
-    def __set_configurations(self) -> List[Action]:
+    def __set_configurations(self) -> list[Action]:
         return [SetLaunchConfiguration(k, v) for k, v in self.__launch_configurations.items()]
 
-    def describe_sub_entities(self) -> List[LaunchDescriptionEntity]:
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """The grouped actions."""
         return list(self.__actions)
 
-    def execute(self, context: LaunchContext) -> List[LaunchDescriptionEntity]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity]:
         """Return the actions wrapped in the scope."""
         return self.get_sub_entities()

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, Iterable, List, Optional, Tuple
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..launch_context import LaunchContext
@@ -15,7 +16,7 @@ from ..utilities import normalize_to_list_of_substitutions, perform_substitution
 if TYPE_CHECKING:
     from ..some_substitutions_type import SomeSubstitutionsType
 
-ArgumentPair = Tuple[List[Substitution], List[Substitution]]
+ArgumentPair = tuple[list[Substitution], list[Substitution]]
 
 
 class IncludeLaunchDescription(Action):
@@ -29,8 +30,8 @@ class IncludeLaunchDescription(Action):
     """
 
     def __init__(self, launch_description_source: object, *,
-                 launch_arguments: Optional[Iterable[Tuple[SomeSubstitutionsType,
-                                                           SomeSubstitutionsType]]] = None,
+                 launch_arguments: (Iterable[tuple[SomeSubstitutionsType, SomeSubstitutionsType]]
+                                    | None) = None,
                  **kwargs: object) -> None:
         # late: launch_description_sources parse front-end files into actions (a cycle)
         from ..launch_description_sources import AnyLaunchDescriptionSource
@@ -43,7 +44,7 @@ class IncludeLaunchDescription(Action):
         self.__source = launch_description_source
         if isinstance(launch_arguments, dict):
             launch_arguments = launch_arguments.items()
-        self.__launch_arguments: List[ArgumentPair] = [
+        self.__launch_arguments: list[ArgumentPair] = [
             (normalize_to_list_of_substitutions(name), normalize_to_list_of_substitutions(value))
             for name, value in (launch_arguments or [])]
 
@@ -53,7 +54,7 @@ class IncludeLaunchDescription(Action):
         return self.__source
 
     @property
-    def launch_arguments(self) -> List[ArgumentPair]:
+    def launch_arguments(self) -> list[ArgumentPair]:
         """The (name, value) pairs given, as substitutions."""
         return self.__launch_arguments
 
@@ -61,12 +62,12 @@ class IncludeLaunchDescription(Action):
         """Return a description."""
         return f"IncludeLaunchDescription('{self.__source.location}')"
 
-    def describe_sub_entities(self) -> List[LaunchDescriptionEntity]:
+    def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """The included description, when it can be loaded without a context."""
         description = self.__source.try_get_launch_description_without_context()
         return [description] if description is not None else []
 
-    def _try_get_arguments_names_without_context(self) -> List[str]:
+    def _try_get_arguments_names_without_context(self) -> list[str]:
         names = []
         for name, _ in self.__launch_arguments:
             try:
@@ -75,7 +76,7 @@ class IncludeLaunchDescription(Action):
                 pass
         return names
 
-    def execute(self, context: LaunchContext) -> List[LaunchDescriptionEntity]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity]:
         """Load the description, check and set the arguments, return it to be visited."""
         description = self.__source.get_launch_description(context)
         given = [(perform_substitutions(context, name), perform_substitutions(context, value))
@@ -96,7 +97,7 @@ class IncludeLaunchDescription(Action):
         return [description]
 
     @staticmethod
-    def __check_required_arguments(description: LaunchDescription, given: List[str]) -> None:
+    def __check_required_arguments(description: LaunchDescription, given: list[str]) -> None:
         declared = description.get_launch_arguments_with_include_launch_description_actions()
         for argument, includes in declared:
             if argument._conditionally_included or argument.default_value is not None:

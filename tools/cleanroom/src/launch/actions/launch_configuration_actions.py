@@ -1,7 +1,8 @@
 """Set or unset a launch configuration in the current scope."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, MutableMapping
+from collections.abc import MutableMapping
+from typing import TYPE_CHECKING
 
 from ._scoped_store_actions import SetInStore, UnsetInStore
 

@@ -1,7 +1,7 @@
 """Print a message to the launch log as `[INFO] [launch.user]: ...`."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..logging import get_logger
@@ -21,7 +21,7 @@ class LogInfo(Action):
         self.__msg = normalize_to_list_of_substitutions(msg)
 
     @property
-    def msg(self) -> List[Substitution]:
+    def msg(self) -> list[Substitution]:
         """The message, as substitutions."""
         return self.__msg
 

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import asyncio
-from typing import TYPE_CHECKING, Any, Callable, Dict, Iterable, Optional
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, Any
 
 from ..action import Action
 from ..event_handlers.on_shutdown import OnShutdown
@@ -15,8 +16,8 @@ class OpaqueCoroutine(Action):
     """Schedule `coroutine(context, *args, **kwargs)` (or without context if
     `ignore_context`); the launch waits for it, and cancels it on shutdown."""
 
-    def __init__(self, *, coroutine: Callable[..., Any], args: Optional[Iterable[Any]] = None,
-                 kwargs: Optional[Dict[str, Any]] = None, ignore_context: bool = False,
+    def __init__(self, *, coroutine: Callable[..., Any], args: Iterable[Any] | None = None,
+                 kwargs: dict[str, Any] | None = None, ignore_context: bool = False,
                  **left_over_kwargs: object) -> None:
         super().__init__(**left_over_kwargs)
         if not asyncio.iscoroutinefunction(coroutine):
@@ -26,13 +27,13 @@ class OpaqueCoroutine(Action):
         self.__args = list(args or [])
         self.__kwargs = dict(kwargs or {})
         self.__ignore_context = ignore_context
-        self.__task: Optional[asyncio.Task] = None
+        self.__task: asyncio.Task | None = None
 
     def describe(self) -> str:
         """Return a description."""
         return f"OpaqueCoroutine({getattr(self.__coroutine, '__name__', '?')})"
 
-    def get_asyncio_future(self) -> Optional[asyncio.Future]:
+    def get_asyncio_future(self) -> asyncio.Future | None:
         """The task running the coroutine."""
         return self.__task
 

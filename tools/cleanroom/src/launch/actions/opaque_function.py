@@ -1,7 +1,8 @@
 """Run a Python function with the launch context; it may return more entities."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Callable, Dict, Iterable, List, Optional
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, Any
 
 from ..action import Action
 from ..event_handler import normalize_entities
@@ -14,8 +15,8 @@ if TYPE_CHECKING:
 class OpaqueFunction(Action):
     """Call `function(context, *args, **kwargs)` and visit what it returns."""
 
-    def __init__(self, *, function: Callable[..., Optional[Iterable[LaunchDescriptionEntity]]],
-                 args: Optional[Iterable[Any]] = None, kwargs: Optional[Dict[str, Any]] = None,
+    def __init__(self, *, function: Callable[..., Iterable[LaunchDescriptionEntity] | None],
+                 args: Iterable[Any] | None = None, kwargs: dict[str, Any] | None = None,
                  **left_over_kwargs: object) -> None:
         super().__init__(**left_over_kwargs)
         if not callable(function):
@@ -34,6 +35,6 @@ class OpaqueFunction(Action):
         """Return a description."""
         return f"OpaqueFunction({getattr(self.__function, '__name__', '?')})"
 
-    def execute(self, context: LaunchContext) -> List[LaunchDescriptionEntity]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity]:
         """Call the function."""
         return normalize_entities(self.__function(context, *self.__args, **self.__kwargs))

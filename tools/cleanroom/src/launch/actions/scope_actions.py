@@ -1,7 +1,7 @@
 """Push/pop/reset of launch configurations and environment: the scoping primitives."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Dict, Optional
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -34,14 +34,14 @@ class ResetLaunchConfigurations(Action):
     configurations being cleared.
     """
 
-    def __init__(self, launch_configurations: Optional[
-            Dict[SomeSubstitutionsType, SomeSubstitutionsType]] = None, **kwargs: object) -> None:
+    def __init__(self, launch_configurations: (dict[SomeSubstitutionsType, SomeSubstitutionsType]
+                                               | None) = None, **kwargs: object) -> None:
         super().__init__(**kwargs)
         self.__launch_configurations = launch_configurations
 
     def execute(self, context: LaunchContext) -> None:
         """Reset."""
-        values: Dict[str, str] = {}
+        values: dict[str, str] = {}
         for name, value in (self.__launch_configurations or {}).items():
             values[perform_substitutions(context, normalize_to_list_of_substitutions(name))] = \
                 perform_substitutions(context, normalize_to_list_of_substitutions(value))
@@ -76,7 +76,7 @@ class ResetEnvironment(Action):
 class PushLocals(Action):
     """Save the context locals (used around included launch descriptions)."""
 
-    def __init__(self, extensions: Optional[dict] = None, **kwargs: object) -> None:
+    def __init__(self, extensions: dict | None = None, **kwargs: object) -> None:
         super().__init__(**kwargs)
         self.__extensions = extensions or {}
 

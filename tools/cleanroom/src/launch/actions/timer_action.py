@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import asyncio
-from typing import TYPE_CHECKING, Dict, Iterable, List, Optional, Sequence, Tuple, Union
+from collections.abc import Iterable, Sequence
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
@@ -32,7 +33,7 @@ class _RestoreScope(Action):
     environment of when it fires (frontends golden 34_xml_executable_timer).
     """
 
-    def __init__(self, configurations: Dict) -> None:
+    def __init__(self, configurations: dict) -> None:
         super().__init__()
         self.__configurations = configurations
 
@@ -51,26 +52,26 @@ class TimerAction(Action):
     shutdown unless `cancel_on_shutdown=False`.
     """
 
-    def __init__(self, *, period: Union[float, SomeSubstitutionsType],
+    def __init__(self, *, period: float | SomeSubstitutionsType,
                  actions: Iterable[LaunchDescriptionEntity],
-                 cancel_on_shutdown: Union[bool, SomeSubstitutionsType] = True,
+                 cancel_on_shutdown: bool | SomeSubstitutionsType = True,
                  **kwargs: object) -> None:
         super().__init__(**kwargs)
         self.__period = float(period) if isinstance(period, (int, float)) \
             else normalize_to_list_of_substitutions(period)
         self.__actions = list(actions)
         self.__cancel_on_shutdown = cancel_on_shutdown
-        self.__future: Optional[asyncio.Future] = None
-        self.__handle: Optional[asyncio.TimerHandle] = None
+        self.__future: asyncio.Future | None = None
+        self.__handle: asyncio.TimerHandle | None = None
         self.__canceled = False
 
     @property
-    def period(self) -> Union[float, List]:
+    def period(self) -> float | list:
         """The delay in seconds (or its substitutions)."""
         return self.__period
 
     @property
-    def actions(self) -> List[LaunchDescriptionEntity]:
+    def actions(self) -> list[LaunchDescriptionEntity]:
         """The actions run after the delay."""
         return self.__actions
 
@@ -79,11 +80,11 @@ class TimerAction(Action):
         return f'TimerAction(period={self.__period})'
 
     def describe_conditional_sub_entities(
-            self) -> List[Tuple[str, Sequence[LaunchDescriptionEntity]]]:
+            self) -> list[tuple[str, Sequence[LaunchDescriptionEntity]]]:
         """The actions, after the period."""
         return [(f'{self.__period} seconds pass', self.__actions)]
 
-    def get_asyncio_future(self) -> Optional[asyncio.Future]:
+    def get_asyncio_future(self) -> asyncio.Future | None:
         """Done when the timer fired or was cancelled."""
         return self.__future
 

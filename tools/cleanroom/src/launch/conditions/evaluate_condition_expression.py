@@ -1,7 +1,7 @@
 """Turn the text of a condition into a bool, strictly."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import perform_substitutions
@@ -16,15 +16,15 @@ VALID_FALSE_EXPRESSIONS = ['false', '0']
 class InvalidConditionExpressionError(Exception):
     """A condition expanded to something that is neither true nor false."""
 
-    def __init__(self, expanded_expression: str, expression: List[Substitution],
-                 valid_expressions: List[str]) -> None:
+    def __init__(self, expanded_expression: str, expression: list[Substitution],
+                 valid_expressions: list[str]) -> None:
         super().__init__(
             f"invalid condition expression, expected one of [{', '.join(valid_expressions)}] "
             f"but got '{expanded_expression}', expanded from "
             f"'{''.join(str(sub) for sub in expression)}'")
 
 
-def evaluate_condition_expression(context: LaunchContext, expression: List[Substitution]) -> bool:
+def evaluate_condition_expression(context: LaunchContext, expression: list[Substitution]) -> bool:
     """Return True for 'true'/'1' and False for 'false'/'0' (any case, spaces ignored).
 
     Anything else raises InvalidConditionExpressionError: a typo like

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import warnings
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING
 
 from ..condition import Condition
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -31,7 +31,7 @@ class LaunchConfigurationEquals(Condition):
     """
 
     def __init__(self, launch_configuration_name: str,
-                 expected_value: Optional[SomeSubstitutionsType]) -> None:
+                 expected_value: SomeSubstitutionsType | None) -> None:
         _warn_deprecated(launch_configuration_name, expected_value)
         self.__name = launch_configuration_name
         self.__expected = None if expected_value is None \

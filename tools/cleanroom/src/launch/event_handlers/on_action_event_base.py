@@ -1,7 +1,8 @@
 """Shared logic of handlers for events about one action (process start/exit, ...)."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, List, Optional, Tuple, Type, Union
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from ..action import Action
 from ..event import Event
@@ -11,7 +12,7 @@ from ..launch_description_entity import LaunchDescriptionEntity
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
 
-ActionMatcher = Union[None, Action, Callable[[Action], bool]]
+ActionMatcher = None | Action | Callable[[Action], bool]
 
 
 def action_matches(target: ActionMatcher, action: object) -> bool:
@@ -31,7 +32,7 @@ class OnActionEventBase(BaseEventHandler):
     """
 
     def __init__(self, *, action_matcher: ActionMatcher, on_event: object,
-                 target_event_cls: Type[Event], target_action_cls: Type[Action] = Action,
+                 target_event_cls: type[Event], target_action_cls: type[Action] = Action,
                  **kwargs: object) -> None:
         if action_matcher is not None and not isinstance(action_matcher, target_action_cls) \
                 and not callable(action_matcher):
@@ -40,8 +41,8 @@ class OnActionEventBase(BaseEventHandler):
         self.__action_matcher = action_matcher
         self.__target_event_cls = target_event_cls
         if callable(on_event) and not isinstance(on_event, LaunchDescriptionEntity):
-            self.__callback: Optional[Callable] = on_event
-            self.__entities: List[LaunchDescriptionEntity] = []
+            self.__callback: Callable | None = on_event
+            self.__entities: list[LaunchDescriptionEntity] = []
         else:
             self.__callback = None
             self.__entities = normalize_entities(on_event)
@@ -63,7 +64,7 @@ class OnActionEventBase(BaseEventHandler):
         """Which events the handler takes."""
         return f'event == {self.__target_event_cls.__name__}'
 
-    def describe(self) -> Tuple[str, List[LaunchDescriptionEntity]]:
+    def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
         """Return a description and the entities."""
         text, _ = super().describe()
         return (text, list(self.__entities))
@@ -73,7 +74,7 @@ class OnActionEventBase(BaseEventHandler):
         return self.__callback(event, context)
 
     def handle(self, event: Event,
-               context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+               context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Return the entities, or what the callback returns."""
         super().handle(event, context)
         if self.__callback is not None:

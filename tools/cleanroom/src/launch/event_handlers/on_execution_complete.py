@@ -1,5 +1,5 @@
 """Handle ExecutionComplete events."""
-from typing import Callable, Optional, Union
+from collections.abc import Callable
 
 from ..action import Action
 from ..events import ExecutionComplete
@@ -9,7 +9,7 @@ from .on_action_event_base import OnActionEventBase
 class OnExecutionComplete(OnActionEventBase):
     """React when `target_action` (or any action, if None) has completed."""
 
-    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+    def __init__(self, *, target_action: Action | Callable | None = None,
                  on_completion: object, **kwargs: object) -> None:
         super().__init__(action_matcher=target_action, on_event=on_completion,
                          target_event_cls=ExecutionComplete, target_action_cls=Action,

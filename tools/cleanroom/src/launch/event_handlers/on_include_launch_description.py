@@ -1,7 +1,7 @@
 """The handler that visits launch descriptions given to LaunchService."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Optional
+from typing import TYPE_CHECKING
 
 from ..event import Event
 from ..event_handler import BaseEventHandler
@@ -19,7 +19,7 @@ class OnIncludeLaunchDescription(BaseEventHandler):
         super().__init__(matcher=lambda e: isinstance(e, IncludeLaunchDescription), **kwargs)
 
     def handle(self, event: Event,
-               context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+               context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Return [the launch description]."""
         super().handle(event, context)
         return [event.launch_description]

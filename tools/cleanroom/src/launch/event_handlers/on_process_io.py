@@ -1,5 +1,5 @@
 """Handle ProcessIO events, per stream."""
-from typing import Callable, Optional, Union
+from collections.abc import Callable
 
 from ..action import Action
 from ..event import Event
@@ -14,9 +14,9 @@ class OnProcessIO(OnActionEventBase):
     return entities.
     """
 
-    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
-                 on_stdin: Optional[Callable] = None, on_stdout: Optional[Callable] = None,
-                 on_stderr: Optional[Callable] = None, **kwargs: object) -> None:
+    def __init__(self, *, target_action: Action | Callable | None = None,
+                 on_stdin: Callable | None = None, on_stdout: Callable | None = None,
+                 on_stderr: Callable | None = None, **kwargs: object) -> None:
         # late: actions import event_handlers (ExecuteProcess on_exit), so not at module level
         from ..actions.execute_process import ExecuteProcess
 

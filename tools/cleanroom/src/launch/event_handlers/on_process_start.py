@@ -1,5 +1,5 @@
 """Handle ProcessStarted events."""
-from typing import Callable, Optional, Union
+from collections.abc import Callable
 
 from ..action import Action
 from ..events.process import ProcessStarted
@@ -9,7 +9,7 @@ from .on_action_event_base import OnActionEventBase
 class OnProcessStart(OnActionEventBase):
     """React when `target_action`'s process (or any, if None) has started."""
 
-    def __init__(self, *, target_action: Optional[Union[Action, Callable]] = None,
+    def __init__(self, *, target_action: Action | Callable | None = None,
                  on_start: object, **kwargs: object) -> None:
         # late: actions import event_handlers (ExecuteProcess on_exit), so not at module level
         from ..actions.execute_process import ExecuteProcess

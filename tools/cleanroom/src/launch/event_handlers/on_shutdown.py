@@ -1,7 +1,8 @@
 """Handle the Shutdown event."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Callable, List, Optional, Tuple
+from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from ..event import Event
 from ..event_handler import BaseEventHandler, normalize_entities
@@ -22,8 +23,8 @@ class OnShutdown(BaseEventHandler):
     def __init__(self, *, on_shutdown: object, **kwargs: object) -> None:
         super().__init__(matcher=lambda event: isinstance(event, Shutdown), **kwargs)
         if callable(on_shutdown) and not isinstance(on_shutdown, LaunchDescriptionEntity):
-            self.__callback: Optional[Callable] = on_shutdown
-            self.__entities: List[LaunchDescriptionEntity] = []
+            self.__callback: Callable | None = on_shutdown
+            self.__entities: list[LaunchDescriptionEntity] = []
         else:
             self.__callback = None
             self.__entities = normalize_entities(on_shutdown)
@@ -38,13 +39,13 @@ class OnShutdown(BaseEventHandler):
         """Which events the handler takes."""
         return 'event issubclass of launch.events.Shutdown'
 
-    def describe(self) -> Tuple[str, List[LaunchDescriptionEntity]]:
+    def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
         """Return a description and the entities."""
         text, _ = super().describe()
         return (text, list(self.__entities))
 
     def handle(self, event: Event,
-               context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+               context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Return the entities, or what the callable returns."""
         super().handle(event, context)
         if self.__callback is not None:

@@ -1,5 +1,5 @@
 """Predicates selecting one action, for events that target actions."""
-from typing import Callable
+from collections.abc import Callable
 
 
 def matches_action(target_action: object) -> Callable[[object], bool]:

@@ -1,17 +1,15 @@
 """Split a command line attribute into arguments, as a shell would, keeping `$(...)` whole."""
 from __future__ import annotations
 
-from typing import List
 
-
-def split_command_line(text: str) -> List[str]:
+def split_command_line(text: str) -> list[str]:
     """Split `text` on unquoted whitespace; quotes outside `$(...)` are removed.
 
     "echo one 'two three'" -> ['echo', 'one', 'two three']; inside a
     substitution everything (quotes, spaces) is kept for its own parser.
     """
-    tokens: List[str] = []
-    current: List[str] = []
+    tokens: list[str] = []
+    current: list[str] = []
     has_token = False
     quote = ''
     depth = 0

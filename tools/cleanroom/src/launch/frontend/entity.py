@@ -1,7 +1,7 @@
 """The format-independent view of one element of a front-end launch file."""
 from __future__ import annotations
 
-from typing import Any, List, Optional, Type
+from typing import Any
 
 
 class Entity:
@@ -17,12 +17,12 @@ class Entity:
         raise NotImplementedError
 
     @property
-    def parent(self) -> Optional[Entity]:
+    def parent(self) -> Entity | None:
         """The enclosing entity, None for the root."""
         raise NotImplementedError
 
     @property
-    def children(self) -> List[Entity]:
+    def children(self) -> list[Entity]:
         """The nested entities (XML child elements, YAML `children:`)."""
         raise NotImplementedError
 
@@ -60,4 +60,4 @@ def unexpected_attributes(type_name: str, names: set) -> ValueError:
     return ValueError(f'Unexpected attribute(s) found in `{type_name}`: {names}')
 
 
-EntityListType: Type = List[Entity]
+EntityListType: type = list[Entity]

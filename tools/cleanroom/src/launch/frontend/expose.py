@@ -7,17 +7,18 @@ when the parser loads its launch extensions.
 """
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, Callable, Dict, List, Tuple, Type
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from ..substitution import Substitution
     from .entity import Entity
 
-ActionParseMethod = Callable[['Entity', Any], Tuple[Type, Dict[str, Any]]]
-SubstitutionParseMethod = Callable[[List[List['Substitution']]], Tuple[Type, Dict[str, Any]]]
+ActionParseMethod = Callable[['Entity', Any], tuple[type, dict[str, Any]]]
+SubstitutionParseMethod = Callable[[list[list['Substitution']]], tuple[type, dict[str, Any]]]
 
-action_parse_methods: Dict[str, ActionParseMethod] = {}
-substitution_parse_methods: Dict[str, SubstitutionParseMethod] = {}
+action_parse_methods: dict[str, ActionParseMethod] = {}
+substitution_parse_methods: dict[str, SubstitutionParseMethod] = {}
 
 
 def register_action_parse_method(name: str, method: ActionParseMethod) -> None:
@@ -30,17 +31,17 @@ def register_substitution_parse_method(name: str, method: SubstitutionParseMetho
     substitution_parse_methods[name] = method
 
 
-def expose_action(name: str) -> Callable[[Type], Type]:
+def expose_action(name: str) -> Callable[[type], type]:
     """Class decorator: tag `name` is parsed by the class's `parse(entity, parser)`."""
-    def decorator(cls: Type) -> Type:
+    def decorator(cls: type) -> type:
         register_action_parse_method(name, cls.parse)
         return cls
     return decorator
 
 
-def expose_substitution(name: str) -> Callable[[Type], Type]:
+def expose_substitution(name: str) -> Callable[[type], type]:
     """Class decorator: `$(name ...)` is parsed by the class's `parse(args)`."""
-    def decorator(cls: Type) -> Type:
+    def decorator(cls: type) -> type:
         register_substitution_parse_method(name, cls.parse)
         return cls
     return decorator
@@ -52,7 +53,7 @@ def instantiate_action(entity: Entity, parser: Any) -> Any:
     return action_type(**kwargs)
 
 
-def instantiate_substitution(name: str, args: List[List[Substitution]]) -> Substitution:
+def instantiate_substitution(name: str, args: list[list[Substitution]]) -> Substitution:
     """Build the substitution `$(name args...)`; RuntimeError for an unknown name."""
     if name not in substitution_parse_methods:
         raise RuntimeError(f'Unknown substitution: {name}')

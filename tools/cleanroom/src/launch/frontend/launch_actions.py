@@ -5,7 +5,7 @@ launch_ros) can extend the keyword arguments of the base tag.
 """
 from __future__ import annotations
 
-from typing import Any, Dict, List, Optional, Tuple, Type
+from typing import Any
 
 from ..actions import (
     AppendEnvironmentVariable,
@@ -26,10 +26,10 @@ from .command_line import split_command_line
 from .entity import Entity, EntityListType
 from .expose import register_action_parse_method
 
-Parsed = Tuple[Type, Dict[str, Any]]
+Parsed = tuple[type, dict[str, Any]]
 
 
-def parse_condition(entity: Entity, parser: Any) -> Dict[str, Any]:
+def parse_condition(entity: Entity, parser: Any) -> dict[str, Any]:
     """The `if` / `unless` attributes every action accepts, as a `condition` kwarg."""
     if_text = entity.get_attr('if', optional=True)
     unless_text = entity.get_attr('unless', optional=True)
@@ -43,18 +43,18 @@ def parse_condition(entity: Entity, parser: Any) -> Dict[str, Any]:
     return {}
 
 
-def optional_substitution(entity: Entity, name: str, parser: Any) -> Optional[List[Any]]:
+def optional_substitution(entity: Entity, name: str, parser: Any) -> list[Any] | None:
     """Attribute `name` parsed for substitutions, or None when absent."""
     text = entity.get_attr(name, optional=True)
     return None if text is None else parser.parse_substitution(text)
 
 
-def nested(entity: Entity, name: str) -> List[Entity]:
+def nested(entity: Entity, name: str) -> list[Entity]:
     """The nested entities called `name` (XML child tags, YAML list under the key)."""
     return entity.get_attr(name, data_type=EntityListType, optional=True) or []
 
 
-def parse_name_value_pairs(entity: Entity, name: str, parser: Any) -> List[Tuple[Any, Any]]:
+def parse_name_value_pairs(entity: Entity, name: str, parser: Any) -> list[tuple[Any, Any]]:
     """`<env name=.. value=..>`-like nested entities as (name, value) substitution pairs."""
     pairs = []
     for item in nested(entity, name):
@@ -64,7 +64,7 @@ def parse_name_value_pairs(entity: Entity, name: str, parser: Any) -> List[Tuple
     return pairs
 
 
-def parse_command(text: str, parser: Any) -> List[List[Any]]:
+def parse_command(text: str, parser: Any) -> list[list[Any]]:
     """A command line attribute as a list of arguments, each a list of substitutions."""
     return [parser.parse_substitution(token) for token in split_command_line(text)]
 
@@ -77,7 +77,7 @@ def parse_bool_or_substitution(entity: Entity, name: str, parser: Any) -> Any:
     return value
 
 
-def parse_process(entity: Entity, parser: Any) -> Dict[str, Any]:
+def parse_process(entity: Entity, parser: Any) -> dict[str, Any]:
     """Keyword arguments of ExecuteProcess common to `executable` and `node`."""
     kwargs = parse_condition(entity, parser)
     for attribute, key in (('cwd', 'cwd'), ('name', 'name'), ('launch-prefix', 'prefix'),
@@ -102,7 +102,7 @@ def parse_process(entity: Entity, parser: Any) -> Dict[str, Any]:
 
 def parse_arg(entity: Entity, parser: Any) -> Parsed:
     """<arg name default description><choice value/></arg>."""
-    kwargs: Dict[str, Any] = {'name': entity.get_attr('name')}
+    kwargs: dict[str, Any] = {'name': entity.get_attr('name')}
     default = entity.get_attr('default', optional=True)
     if default is not None:
         kwargs['default_value'] = parser.parse_substitution(default)

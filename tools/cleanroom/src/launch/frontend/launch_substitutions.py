@@ -1,7 +1,8 @@
 """The `$(...)` substitutions of `launch` and how their arguments map to constructors."""
 from __future__ import annotations
 
-from typing import Any, Callable, Dict, List, Tuple, Type
+from collections.abc import Callable
+from typing import Any
 
 from ..substitution import Substitution
 from ..substitutions import (
@@ -25,8 +26,8 @@ from ..substitutions import (
 )
 from .expose import register_substitution_parse_method
 
-Arguments = List[List[Substitution]]
-Parsed = Tuple[Type, Dict[str, Any]]
+Arguments = list[list[Substitution]]
+Parsed = tuple[type, dict[str, Any]]
 
 
 def check_count(name: str, args: Arguments, minimum: int, maximum: int) -> None:
@@ -37,25 +38,25 @@ def check_count(name: str, args: Arguments, minimum: int, maximum: int) -> None:
                         f'got {len(args)}')
 
 
-def _name_and_default(name: str, cls: Type, key: str, default_key: str
+def _name_and_default(name: str, cls: type, key: str, default_key: str
                       ) -> Callable[[Arguments], Parsed]:
     def parse(args: Arguments) -> Parsed:
         check_count(name, args, 1, 2)
-        kwargs: Dict[str, Any] = {key: args[0]}
+        kwargs: dict[str, Any] = {key: args[0]}
         if len(args) == 2:
             kwargs[default_key] = args[1]
         return cls, kwargs
     return parse
 
 
-def _no_arguments(name: str, cls: Type) -> Callable[[Arguments], Parsed]:
+def _no_arguments(name: str, cls: type) -> Callable[[Arguments], Parsed]:
     def parse(args: Arguments) -> Parsed:
         check_count(name, args, 0, 0)
         return cls, {}
     return parse
 
 
-def _positional(name: str, cls: Type, keys: Tuple[str, ...], required: int
+def _positional(name: str, cls: type, keys: tuple[str, ...], required: int
                 ) -> Callable[[Arguments], Parsed]:
     def parse(args: Arguments) -> Parsed:
         check_count(name, args, required, len(keys))
@@ -63,12 +64,12 @@ def _positional(name: str, cls: Type, keys: Tuple[str, ...], required: int
     return parse
 
 
-def _construct_variadic(*, cls: Type, args: Arguments) -> Substitution:
+def _construct_variadic(*, cls: type, args: Arguments) -> Substitution:
     """Constructor adapter for substitutions taking *args (any, all)."""
     return cls(*args)
 
 
-def _variadic(cls: Type) -> Callable[[Arguments], Parsed]:
+def _variadic(cls: type) -> Callable[[Arguments], Parsed]:
     def parse(args: Arguments) -> Parsed:
         return _construct_variadic, {'cls': cls, 'args': args}
     return parse
@@ -82,7 +83,7 @@ def _optenv(args: Arguments) -> Parsed:
 
 def _eval(args: Arguments) -> Parsed:
     check_count('eval', args, 1, 2)
-    kwargs: Dict[str, Any] = {'expression': args[0]}
+    kwargs: dict[str, Any] = {'expression': args[0]}
     if len(args) == 2:
         kwargs['python_modules'] = [args[1]]
     return PythonExpression, kwargs
@@ -93,7 +94,7 @@ def _find_exec(args: Arguments) -> Parsed:
     return FindExecutable, {'name': args[0]}
 
 
-PARSE_METHODS: Dict[str, Callable[[Arguments], Parsed]] = {
+PARSE_METHODS: dict[str, Callable[[Arguments], Parsed]] = {
     'var': _name_and_default('var', LaunchConfiguration, 'variable_name', 'default'),
     'env': _name_and_default('env', EnvironmentVariable, 'name', 'default_value'),
     'optenv': _optenv,

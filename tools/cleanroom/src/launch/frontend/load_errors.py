@@ -1,7 +1,7 @@
 """The text Jazzy gives when every loader of a launch file failed."""
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 from ..invalid_launch_file_error import InvalidLaunchFileError
 

@@ -7,7 +7,7 @@ an unknown substitution name therefore surfaces as lark's VisitError
 from __future__ import annotations
 
 import functools
-from typing import Any, List
+from typing import Any
 
 from lark import Lark, Token, Transformer
 
@@ -40,9 +40,9 @@ def _lark() -> Lark:
     return Lark(GRAMMAR, start='template', parser='earley')
 
 
-def _join_text(parts: List[Any]) -> List[Substitution]:
+def _join_text(parts: list[Any]) -> list[Substitution]:
     """Flatten parts into substitutions, merging neighbouring text."""
-    result: List[Substitution] = []
+    result: list[Substitution] = []
     for part in parts:
         items = part if isinstance(part, list) else [part]
         for item in items:
@@ -59,23 +59,23 @@ def _join_text(parts: List[Any]) -> List[Substitution]:
 class ExtractSubstitution(Transformer):
     """Build substitutions bottom-up from the parse tree."""
 
-    def template(self, fragments: List[Any]) -> List[Substitution]:
+    def template(self, fragments: list[Any]) -> list[Substitution]:
         return _join_text(fragments)
 
-    def substitution(self, items: List[Any]) -> Substitution:
+    def substitution(self, items: list[Any]) -> Substitution:
         name, *arguments = items
         return instantiate_substitution(str(name), arguments)
 
-    def argument(self, parts: List[Any]) -> List[Substitution]:
+    def argument(self, parts: list[Any]) -> list[Substitution]:
         return _join_text(parts)
 
-    def single_quoted(self, parts: List[Any]) -> List[Substitution]:
+    def single_quoted(self, parts: list[Any]) -> list[Substitution]:
         return _join_text(parts) or [TextSubstitution(text='')]
 
     double_quoted = single_quoted
 
 
-def parse_substitution(string: str) -> List[Substitution]:
+def parse_substitution(string: str) -> list[Substitution]:
     """Parse `string`; plain text gives one TextSubstitution (none for '')."""
     if '$(' not in string:
         return [TextSubstitution(text=string)]  # the common case, without the parser
@@ -92,6 +92,6 @@ def parse_if_substitutions(value: Any) -> Any:
     return value
 
 
-def has_substitutions(substitutions: List[Substitution]) -> bool:
+def has_substitutions(substitutions: list[Substitution]) -> bool:
     """True when anything but plain text is in `substitutions`."""
     return any(not isinstance(s, TextSubstitution) for s in substitutions)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import os
 from importlib.metadata import entry_points
-from typing import Any, Dict, List, Optional, Set, TextIO, Tuple, Type, Union
+from typing import Any, TextIO
 
 from ..action import Action
 from ..launch_description import LaunchDescription
@@ -25,11 +25,11 @@ PARSER_GROUP = 'launch.frontend.parser'
 EXTENSION_GROUP = 'launch.frontend.launch_extension'
 
 
-def _file_name(file: Union[str, TextIO]) -> str:
+def _file_name(file: str | TextIO) -> str:
     return file if isinstance(file, str) else getattr(file, 'name', '')
 
 
-def file_extension(file: Union[str, TextIO]) -> str:
+def file_extension(file: str | TextIO) -> str:
     """'xml' for 'a.launch.xml'."""
     return os.path.splitext(_file_name(file))[1].lstrip('.')
 
@@ -37,7 +37,7 @@ def file_extension(file: Union[str, TextIO]) -> str:
 class Parser:
     """Parse entities into actions and text into substitutions (format independent)."""
 
-    frontend_parsers: Optional[Dict[str, Type[Parser]]] = None
+    frontend_parsers: dict[str, type[Parser]] | None = None
     extensions_loaded = False
 
     def __init__(self) -> None:
@@ -78,7 +78,7 @@ class Parser:
         entity.assert_entity_completely_parsed()
         return LaunchDescription(actions)
 
-    def parse_substitution(self, value: str) -> List[Substitution]:
+    def parse_substitution(self, value: str) -> list[Substitution]:
         """Parse `$(...)` substitutions in `value`."""
         return parse_substitution(self.escape_characters(value))
 
@@ -91,35 +91,35 @@ class Parser:
         return value
 
     @classmethod
-    def get_file_extensions(cls) -> Set[str]:
+    def get_file_extensions(cls) -> set[str]:
         """The file extensions this parser reads (none for the base class)."""
         return set()
 
     @classmethod
-    def get_available_extensions(cls) -> List[str]:
+    def get_available_extensions(cls) -> list[str]:
         """Extensions of every registered format parser."""
         cls.load_parser_implementations()
         return sorted(set().union(*(p.get_file_extensions()
                                     for p in (Parser.frontend_parsers or {}).values())))
 
     @classmethod
-    def may_parse(cls, file: Union[str, TextIO]) -> bool:
+    def may_parse(cls, file: str | TextIO) -> bool:
         """True when the file's extension is one of this parser's."""
         return file_extension(file) in cls.get_file_extensions()
 
     @classmethod
-    def get_parsers_from_filename(cls, file: Union[str, TextIO]) -> List[Type[Parser]]:
+    def get_parsers_from_filename(cls, file: str | TextIO) -> list[type[Parser]]:
         """The format parsers whose extension fits the file."""
         cls.load_parser_implementations()
         return [p for p in (Parser.frontend_parsers or {}).values() if p.may_parse(file)]
 
     @classmethod
-    def is_filename_valid(cls, file: Union[str, TextIO]) -> bool:
+    def is_filename_valid(cls, file: str | TextIO) -> bool:
         """True when some format parser reads files named like this."""
         return bool(cls.get_parsers_from_filename(file))
 
     @classmethod
-    def load(cls, file: Union[str, TextIO]) -> Tuple[Entity, Parser]:
+    def load(cls, file: str | TextIO) -> tuple[Entity, Parser]:
         """Read the file with the parser of its extension, then with the others.
 
         Every failure is reported: "Caught multiple exceptions ... [xml]:" with
@@ -130,7 +130,7 @@ class Parser:
         if not matching:
             raise InvalidFrontendLaunchFileError(UNKNOWN_FORMAT)
         others = [p for p in (Parser.frontend_parsers or {}).values() if p not in matching]
-        errors: List[BaseException] = []
+        errors: list[BaseException] = []
         for implementation in matching + others:
             try:
                 return implementation.load(file)

@@ -1,7 +1,7 @@
 """Coerce the text of an attribute to the type a parse method asks for."""
 from __future__ import annotations
 
-from typing import Any, List
+from typing import Any
 
 import yaml
 
@@ -74,4 +74,4 @@ def get_typed_value(value: Any, data_type: Any, can_be_str: bool = True) -> Any:
         raise
 
 
-AllowedListTypes = (List[int], List[float], List[bool], List[str])
+AllowedListTypes = (list[int], list[float], list[bool], list[str])

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import os
-from typing import Callable, List, Type
+from collections.abc import Callable
 
 from ..frontend.load_errors import InvalidFrontendLaunchFileError, describe_load_errors
 from ..frontend.parser import Parser
@@ -15,7 +15,7 @@ __all__ = ['InvalidFrontendLaunchFileError', 'get_launch_description_from_any_la
 
 
 def get_launch_description_from_any_launch_file(
-        launch_file_path: str, *, parser: Type[Parser] = Parser) -> LaunchDescription:
+        launch_file_path: str, *, parser: type[Parser] = Parser) -> LaunchDescription:
     """Try the loader the extension suggests first, then the other; report every failure.
 
     `.py` files are tried as Python, then as a front end; anything else the
@@ -26,11 +26,11 @@ def get_launch_description_from_any_launch_file(
         return get_launch_description_from_frontend_launch_file(path, parser=parser)
 
     extension = os.path.splitext(launch_file_path)[1].lstrip('.')
-    loaders: List[Callable[[str], LaunchDescription]] = [
+    loaders: list[Callable[[str], LaunchDescription]] = [
         get_launch_description_from_python_launch_file, frontend]
     if extension != 'py':
         loaders.reverse()
-    errors: List[BaseException] = []
+    errors: list[BaseException] = []
     for loader in loaders:
         try:
             return loader(launch_file_path)

@@ -1,7 +1,7 @@
 """A LaunchDescription loaded from a front-end (XML, YAML) launch file."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Type
+from typing import TYPE_CHECKING
 
 from ..frontend.parser import Parser
 from ..launch_description import LaunchDescription
@@ -17,7 +17,7 @@ class FrontendLaunchDescriptionSource(LaunchDescriptionSource):
 
     def __init__(self, launch_file_path: SomeSubstitutionsType, *,
                  method: str = 'interpreted frontend launch file',
-                 parser: Type[Parser] = Parser) -> None:
+                 parser: type[Parser] = Parser) -> None:
         super().__init__(None, launch_file_path, method)
         self.__parser = parser
 

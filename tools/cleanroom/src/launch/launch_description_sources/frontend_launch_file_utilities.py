@@ -1,8 +1,6 @@
 """Load a front-end (XML, YAML) launch file into a LaunchDescription."""
 from __future__ import annotations
 
-from typing import Type
-
 from ..frontend.load_errors import InvalidFrontendLaunchFileError
 from ..frontend.parser import Parser
 from ..launch_description import LaunchDescription
@@ -11,7 +9,7 @@ __all__ = ['InvalidFrontendLaunchFileError', 'get_launch_description_from_fronte
 
 
 def get_launch_description_from_frontend_launch_file(
-        frontend_launch_file_path: str, *, parser: Type[Parser] = Parser) -> LaunchDescription:
+        frontend_launch_file_path: str, *, parser: type[Parser] = Parser) -> LaunchDescription:
     """Read the file with `parser` (by default: the format of its extension) and parse it."""
     root_entity, parser_instance = parser.load(frontend_launch_file_path)
     return parser_instance.parse_description(root_entity)

@@ -13,7 +13,7 @@ import os
 import socket
 import sys
 import threading
-from typing import Dict, Optional, TextIO, Tuple
+from typing import TextIO
 
 __all__ = ['get_logger', 'get_output_loggers', 'launch_config', 'reset']
 
@@ -47,12 +47,12 @@ class _LaunchConfig:
     def __init__(self) -> None:
         self._lock = threading.RLock()
         self.level = logging.INFO
-        self._log_dir: Optional[str] = None
-        self._file_handler: Optional[logging.Handler] = None
+        self._log_dir: str | None = None
+        self._file_handler: logging.Handler | None = None
         self.screen_handler = _ScreenHandler()
         self.screen_handler.setFormatter(logging.Formatter(SCREEN_FORMAT, style='{'))
-        self._configured: Dict[str, logging.Logger] = {}
-        self._own_logs: Dict[str, TextIO] = {}
+        self._configured: dict[str, logging.Logger] = {}
+        self._own_logs: dict[str, TextIO] = {}
 
     @property
     def log_dir(self) -> str:
@@ -121,7 +121,7 @@ class _LaunchConfig:
 launch_config = _LaunchConfig()
 
 
-def get_logger(name: Optional[str] = None) -> logging.Logger:
+def get_logger(name: str | None = None) -> logging.Logger:
     """Return a logger printing `[LEVEL] [name]: msg` to the screen and launch.log."""
     name = name or 'launch'
     with launch_config._lock:
@@ -176,7 +176,7 @@ _OUTPUT_MODES = {
 }
 
 
-def get_output_loggers(process_name: str, output: str) -> Tuple[_OutputLogger, _OutputLogger]:
+def get_output_loggers(process_name: str, output: str) -> tuple[_OutputLogger, _OutputLogger]:
     """Return (stdout, stderr) writers for a process's `output` setting.
 
     'screen' prints both streams; 'log' (the default) writes both to launch.log

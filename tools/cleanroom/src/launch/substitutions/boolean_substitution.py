@@ -1,7 +1,8 @@
 """Boolean logic on 'true'/'false' style values: Not, And, Or, Any, All."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Iterable, List
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..substitution import Substitution
@@ -12,7 +13,7 @@ if TYPE_CHECKING:
     from ..some_substitutions_type import SomeSubstitutionsType
 
 
-def _truth(context: LaunchContext, subs: List[Substitution]) -> bool:
+def _truth(context: LaunchContext, subs: list[Substitution]) -> bool:
     return evaluate_condition_expression(context, subs)
 
 
@@ -28,7 +29,7 @@ class NotSubstitution(Substitution):
         self.__value = normalize_to_list_of_substitutions(value)
 
     @property
-    def value(self) -> List[Substitution]:
+    def value(self) -> list[Substitution]:
         """The operand, as substitutions."""
         return self.__value
 
@@ -48,12 +49,12 @@ class _BinarySubstitution(Substitution):
         self.__right = normalize_to_list_of_substitutions(right)
 
     @property
-    def left(self) -> List[Substitution]:
+    def left(self) -> list[Substitution]:
         """The left operand, as substitutions."""
         return self.__left
 
     @property
-    def right(self) -> List[Substitution]:
+    def right(self) -> list[Substitution]:
         """The right operand, as substitutions."""
         return self.__right
 
@@ -86,7 +87,7 @@ class _ManySubstitution(Substitution):
         self.__args = [normalize_to_list_of_substitutions(a) for a in args]
 
     @property
-    def args(self) -> List[List[Substitution]]:
+    def args(self) -> list[list[Substitution]]:
         """The operands, each as substitutions."""
         return self.__args
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import shlex
 import subprocess
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..logging import get_logger
 from ..substitution import Substitution
@@ -31,12 +31,12 @@ class Command(Substitution):
         self.__on_stderr = normalize_to_list_of_substitutions(on_stderr)
 
     @property
-    def command(self) -> List[Substitution]:
+    def command(self) -> list[Substitution]:
         """The command, as substitutions."""
         return self.__command
 
     @property
-    def on_stderr(self) -> List[Substitution]:
+    def on_stderr(self) -> list[Substitution]:
         """What to do with stderr output, as substitutions."""
         return self.__on_stderr
 

@@ -1,7 +1,7 @@
 """The value of an environment variable in the launch's (scoped) environment."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Optional
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -16,19 +16,19 @@ class EnvironmentVariable(Substitution):
     """Look up a variable in `context.environment`, else `default_value`, else fail."""
 
     def __init__(self, name: SomeSubstitutionsType, *,
-                 default_value: Optional[SomeSubstitutionsType] = None) -> None:
+                 default_value: SomeSubstitutionsType | None = None) -> None:
         super().__init__()
         self.__name = normalize_to_list_of_substitutions(name)
         self.__default_value = None if default_value is None \
             else normalize_to_list_of_substitutions(default_value)
 
     @property
-    def name(self) -> List[Substitution]:
+    def name(self) -> list[Substitution]:
         """The variable name, as substitutions."""
         return self.__name
 
     @property
-    def default_value(self) -> Optional[List[Substitution]]:
+    def default_value(self) -> list[Substitution] | None:
         """The default, as substitutions, or None."""
         return self.__default_value
 

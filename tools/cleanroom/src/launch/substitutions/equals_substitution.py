@@ -1,7 +1,7 @@
 """Compare two values: 'true' if equal, 'false' if not."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, List
+from typing import TYPE_CHECKING, Any
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -10,7 +10,7 @@ if TYPE_CHECKING:
     from ..launch_context import LaunchContext
 
 
-def _normalize(value: Any) -> List[Substitution]:
+def _normalize(value: Any) -> list[Substitution]:
     if value is None:
         return normalize_to_list_of_substitutions('')
     if isinstance(value, bool):
@@ -55,12 +55,12 @@ class EqualsSubstitution(Substitution):
         self.__right = _normalize(right)
 
     @property
-    def left(self) -> List[Substitution]:
+    def left(self) -> list[Substitution]:
         """The left value, as substitutions."""
         return self.__left
 
     @property
-    def right(self) -> List[Substitution]:
+    def right(self) -> list[Substitution]:
         """The right value, as substitutions."""
         return self.__right
 

@@ -1,7 +1,7 @@
 """The content of a file."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -20,7 +20,7 @@ class FileContent(Substitution):
         self.__path = normalize_to_list_of_substitutions(path)
 
     @property
-    def path(self) -> List[Substitution]:
+    def path(self) -> list[Substitution]:
         """The path, as substitutions."""
         return self.__path
 

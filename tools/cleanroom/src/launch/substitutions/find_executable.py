@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import shutil
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -21,7 +21,7 @@ class FindExecutable(Substitution):
         self.__name = normalize_to_list_of_substitutions(name)
 
     @property
-    def name(self) -> List[Substitution]:
+    def name(self) -> list[Substitution]:
         """The executable name, as substitutions."""
         return self.__name
 

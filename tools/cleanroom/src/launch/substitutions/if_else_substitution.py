@@ -1,7 +1,7 @@
 """Pick one of two values depending on a condition expression."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List
+from typing import TYPE_CHECKING
 
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..substitution import Substitution
@@ -26,23 +26,23 @@ class IfElseSubstitution(Substitution):
         self.__else_value = normalize_to_list_of_substitutions(else_value)
 
     @property
-    def condition(self) -> List[Substitution]:
+    def condition(self) -> list[Substitution]:
         """The condition, as substitutions."""
         return self.__condition
 
     @property
-    def if_value(self) -> List[Substitution]:
+    def if_value(self) -> list[Substitution]:
         """Value when true."""
         return self.__if_value
 
     @property
-    def else_value(self) -> List[Substitution]:
+    def else_value(self) -> list[Substitution]:
         """Value when false."""
         return self.__else_value
 
     def describe(self) -> str:
         """Return a description."""
-        def join(subs: List[Substitution]) -> str:
+        def join(subs: list[Substitution]) -> str:
             return ' + '.join(s.describe() for s in subs)
         return (f'IfElseSubstitution({join(self.__condition)}, {join(self.__if_value)}, '
                 f'{join(self.__else_value)})')

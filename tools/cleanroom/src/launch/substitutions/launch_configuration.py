@@ -1,7 +1,7 @@
 """The value of a launch configuration (launch argument)."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, List, Optional
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -16,7 +16,7 @@ class LaunchConfiguration(Substitution):
     """Look up a launch configuration, falling back to `default` when given."""
 
     def __init__(self, variable_name: SomeSubstitutionsType, *,
-                 default: Optional[object] = None) -> None:
+                 default: object | None = None) -> None:
         super().__init__()
         self.__variable_name = normalize_to_list_of_substitutions(variable_name)
         if default is None:
@@ -27,12 +27,12 @@ class LaunchConfiguration(Substitution):
             self.__default = normalize_to_list_of_substitutions(str(default))
 
     @property
-    def variable_name(self) -> List[Substitution]:
+    def variable_name(self) -> list[Substitution]:
         """The name, as substitutions."""
         return self.__variable_name
 
     @property
-    def default(self) -> Optional[List[Substitution]]:
+    def default(self) -> list[Substitution] | None:
         """The default, as substitutions, or None."""
         return self.__default
 

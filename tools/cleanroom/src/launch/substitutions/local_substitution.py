@@ -1,7 +1,7 @@
 """A value from the context locals, e.g. 'event.returncode' inside an event handler."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from .substitution_failure import SubstitutionFailure
@@ -13,7 +13,7 @@ if TYPE_CHECKING:
 class LocalSubstitution(Substitution):
     """str() of `context.locals.<expression>`."""
 
-    def __init__(self, expression: str, description: Optional[str] = None) -> None:
+    def __init__(self, expression: str, description: str | None = None) -> None:
         super().__init__()
         self.__expression = expression
         self.__description = description
@@ -24,7 +24,7 @@ class LocalSubstitution(Substitution):
         return self.__expression
 
     @property
-    def description(self) -> Optional[str]:
+    def description(self) -> str | None:
         """An optional description."""
         return self.__description
 

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import os
-from typing import TYPE_CHECKING, Iterable, List
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -20,7 +21,7 @@ class PathJoinSubstitution(Substitution):
         self.__components = [normalize_to_list_of_substitutions(c) for c in substitutions]
 
     @property
-    def substitutions(self) -> List[List[Substitution]]:
+    def substitutions(self) -> list[list[Substitution]]:
         """The components, each a list of substitutions."""
         return self.__components
 

@@ -2,7 +2,8 @@
 from __future__ import annotations
 
 import importlib
-from typing import TYPE_CHECKING, Any, Dict, Iterable, List
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
 
 from ..substitution import Substitution
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
@@ -27,12 +28,12 @@ class PythonExpression(Substitution):
         self.__python_modules = [normalize_to_list_of_substitutions(m) for m in python_modules]
 
     @property
-    def expression(self) -> List[Substitution]:
+    def expression(self) -> list[Substitution]:
         """The expression, as substitutions."""
         return self.__expression
 
     @property
-    def python_modules(self) -> List[List[Substitution]]:
+    def python_modules(self) -> list[list[Substitution]]:
         """The modules made available, as substitutions."""
         return self.__python_modules
 
@@ -42,7 +43,7 @@ class PythonExpression(Substitution):
 
     def perform(self, context: LaunchContext) -> str:
         """Evaluate the expression and return str() of the result."""
-        namespace: Dict[str, Any] = {}
+        namespace: dict[str, Any] = {}
         for module_subs in self.__python_modules:
             name = perform_substitutions(context, module_subs)
             module = importlib.import_module(name)

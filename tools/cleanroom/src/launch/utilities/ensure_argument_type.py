@@ -1,10 +1,11 @@
 """Type checks for constructor arguments with messages that name the argument."""
 import inspect
-from typing import Any, Iterable, Optional, Union
+from collections.abc import Iterable
+from typing import Any
 
 
-def ensure_argument_type(argument: Any, types: Union[type, Iterable[type]],
-                         argument_name: str, caller: Optional[str] = None) -> None:
+def ensure_argument_type(argument: Any, types: type | Iterable[type],
+                         argument_name: str, caller: str | None = None) -> None:
     """Raise TypeError unless `argument` is an instance of one of `types`.
 
     Catching wrong types at construction time points at the launch file line
@@ -19,6 +20,6 @@ def ensure_argument_type(argument: Any, types: Union[type, Iterable[type]],
     if isinstance(argument, tuple(type_list)):
         return
     names = ', '.join(f"'{t.__name__}'" for t in type_list)
-    where = f"{caller}: " if caller else ''
+    where = f'{caller}: ' if caller else ''
     raise TypeError(f"{where}Expected '{argument_name}' to be one of [{names}], "
                     f"but got '{argument}' of type '{type(argument)}'")

@@ -1,12 +1,12 @@
 """Turn text, a substitution or a mix of both into a list of substitutions."""
 import os
-from typing import Any, List
+from typing import Any
 
 from .._text_substitution import TextSubstitution
 from ..substitution import Substitution
 
 
-def normalize_to_list_of_substitutions(subs: Any) -> List[Substitution]:
+def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
     """Return `subs` as a list of Substitution; text becomes TextSubstitution.
 
     Accepts str, os.PathLike, Substitution, or an iterable of those (numbers

@@ -1,5 +1,6 @@
 """Perform a list of substitutions and join the results."""
-from typing import TYPE_CHECKING, Iterable
+from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
 

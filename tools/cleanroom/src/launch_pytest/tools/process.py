@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import asyncio
 import time
-from typing import Callable, Optional
+from collections.abc import Callable
 
 from launch import LaunchContext
 from launch.actions import ExecuteProcess
@@ -25,7 +25,7 @@ def _exited(action: ExecuteProcess) -> bool:
     return _started(action) and action.return_code is not None
 
 
-async def _wait(condition: Callable[[], bool], timeout: Optional[float]) -> bool:
+async def _wait(condition: Callable[[], bool], timeout: float | None) -> bool:
     deadline = None if timeout is None else time.monotonic() + timeout
     while not condition():
         if deadline is not None and time.monotonic() >= deadline:
@@ -34,7 +34,7 @@ async def _wait(condition: Callable[[], bool], timeout: Optional[float]) -> bool
     return True
 
 
-def _wait_sync(condition: Callable[[], bool], timeout: Optional[float]) -> bool:
+def _wait_sync(condition: Callable[[], bool], timeout: float | None) -> bool:
     deadline = None if timeout is None else time.monotonic() + timeout
     while not condition():
         if deadline is not None and time.monotonic() >= deadline:
@@ -61,7 +61,7 @@ def _stderr_matches(action, validate_output) -> Callable[[], bool]:
 
 
 async def wait_for_start(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
-                         timeout: Optional[float] = None) -> None:
+                         timeout: float | None = None) -> None:
     """Return once the process has started; TimeoutError after `timeout` seconds."""
     if not await _wait(lambda: _started(execute_process_action), timeout):
         raise TimeoutError(f'process {_name(execute_process_action)} did not start within '
@@ -69,7 +69,7 @@ async def wait_for_start(launch_context: LaunchContext, execute_process_action: 
 
 
 def wait_for_start_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
-                        timeout: Optional[float] = None) -> None:
+                        timeout: float | None = None) -> None:
     """wait_for_start for a test that is not async."""
     if not _wait_sync(lambda: _started(execute_process_action), timeout):
         raise TimeoutError(f'process {_name(execute_process_action)} did not start within '
@@ -77,7 +77,7 @@ def wait_for_start_sync(launch_context: LaunchContext, execute_process_action: E
 
 
 async def wait_for_exit(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
-                        timeout: Optional[float] = None) -> int:
+                        timeout: float | None = None) -> int:
     """Return the exit code once the process exited; TimeoutError after `timeout` seconds."""
     if not await _wait(lambda: _exited(execute_process_action), timeout):
         raise TimeoutError(f'process {_name(execute_process_action)} did not exit within '
@@ -86,7 +86,7 @@ async def wait_for_exit(launch_context: LaunchContext, execute_process_action: E
 
 
 def wait_for_exit_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
-                       timeout: Optional[float] = None) -> int:
+                       timeout: float | None = None) -> int:
     """wait_for_exit for a test that is not async."""
     if not _wait_sync(lambda: _exited(execute_process_action), timeout):
         raise TimeoutError(f'process {_name(execute_process_action)} did not exit within '
@@ -96,35 +96,35 @@ def wait_for_exit_sync(launch_context: LaunchContext, execute_process_action: Ex
 
 async def wait_for_output(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                           validate_output: Callable[[str], bool],
-                          timeout: Optional[float] = None) -> bool:
+                          timeout: float | None = None) -> bool:
     """True once validate_output(all stdout so far) is true; False after `timeout`."""
     return await _wait(_stdout_matches(execute_process_action, validate_output), timeout)
 
 
 def wait_for_output_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                          validate_output: Callable[[str], bool],
-                         timeout: Optional[float] = None) -> bool:
+                         timeout: float | None = None) -> bool:
     """wait_for_output for a test that is not async."""
     return _wait_sync(_stdout_matches(execute_process_action, validate_output), timeout)
 
 
 async def wait_for_stderr(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                           validate_output: Callable[[str], bool],
-                          timeout: Optional[float] = None) -> bool:
+                          timeout: float | None = None) -> bool:
     """True once validate_output(all stderr so far) is true; False after `timeout`."""
     return await _wait(_stderr_matches(execute_process_action, validate_output), timeout)
 
 
 def wait_for_stderr_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                          validate_output: Callable[[str], bool],
-                         timeout: Optional[float] = None) -> bool:
+                         timeout: float | None = None) -> bool:
     """wait_for_stderr for a test that is not async."""
     return _wait_sync(_stderr_matches(execute_process_action, validate_output), timeout)
 
 
 async def assert_output(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                         validate_output: Callable[[str], bool],
-                        timeout: Optional[float] = None) -> None:
+                        timeout: float | None = None) -> None:
     """Fail unless validate_output(stdout) becomes true (checked now when timeout is None)."""
     if not await _wait(_stdout_matches(execute_process_action, validate_output), timeout or 0):
         raise AssertionError(_no_match(execute_process_action, 'stdout'))
@@ -132,7 +132,7 @@ async def assert_output(launch_context: LaunchContext, execute_process_action: E
 
 def assert_output_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                        validate_output: Callable[[str], bool],
-                       timeout: Optional[float] = None) -> None:
+                       timeout: float | None = None) -> None:
     """assert_output for a test that is not async."""
     if not _wait_sync(_stdout_matches(execute_process_action, validate_output), timeout or 0):
         raise AssertionError(_no_match(execute_process_action, 'stdout'))
@@ -140,7 +140,7 @@ def assert_output_sync(launch_context: LaunchContext, execute_process_action: Ex
 
 async def assert_stderr(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                         validate_output: Callable[[str], bool],
-                        timeout: Optional[float] = None) -> None:
+                        timeout: float | None = None) -> None:
     """Fail unless validate_output(stderr) becomes true (checked now when timeout is None)."""
     if not await _wait(_stderr_matches(execute_process_action, validate_output), timeout or 0):
         raise AssertionError(_no_match(execute_process_action, 'stderr'))
@@ -148,7 +148,7 @@ async def assert_stderr(launch_context: LaunchContext, execute_process_action: E
 
 def assert_stderr_sync(launch_context: LaunchContext, execute_process_action: ExecuteProcess,
                        validate_output: Callable[[str], bool],
-                       timeout: Optional[float] = None) -> None:
+                       timeout: float | None = None) -> None:
     """assert_stderr for a test that is not async."""
     if not _wait_sync(_stderr_matches(execute_process_action, validate_output), timeout or 0):
         raise AssertionError(_no_match(execute_process_action, 'stderr'))

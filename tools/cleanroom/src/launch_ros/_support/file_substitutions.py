@@ -7,7 +7,8 @@ when the argument is missing.
 from __future__ import annotations
 
 import importlib
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from launch import LaunchContext
 

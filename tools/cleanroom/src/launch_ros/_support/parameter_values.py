@@ -14,11 +14,11 @@ from __future__ import annotations
 
 import typing
 from collections.abc import Mapping, Sequence
-from typing import Any, Union
+from typing import Any
 
 import yaml
 
-ScalarValue = Union[bool, int, float, str, bytes]
+ScalarValue = bool | int | float | str | bytes
 ParameterScalarTypes = (bool, int, float, str, bytes)
 
 
@@ -62,7 +62,7 @@ def _type_error(value: Any, value_type: Any) -> TypeError:
 def list_item_type(value_type: Any) -> Any | None:
     """`List[int]` / `list[int]` -> int; `list` -> None (any item type)."""
     origin = typing.get_origin(value_type)
-    if origin in (list, tuple, Sequence, typing.List):
+    if origin in (list, tuple, Sequence, list):
         args = typing.get_args(value_type)
         return args[0] if args else None
     return None
@@ -70,7 +70,7 @@ def list_item_type(value_type: Any) -> Any | None:
 
 def is_list_type(value_type: Any) -> bool:
     return value_type in (list, tuple) or typing.get_origin(value_type) in (
-        list, tuple, Sequence, typing.List)
+        list, tuple, Sequence, list)
 
 
 def coerce_value(value: Any, value_type: Any) -> Any:

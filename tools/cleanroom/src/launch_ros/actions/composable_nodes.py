@@ -7,7 +7,7 @@ raise a clear error when they would run.
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import Action, LaunchContext
 
@@ -34,14 +34,14 @@ class ComposableNodeContainer(Action):
 
     def __init__(self, *, name: Any, namespace: Any, package: Any = None,
                  executable: Any = None,
-                 composable_node_descriptions: Optional[list[Any]] = None,
+                 composable_node_descriptions: list[Any] | None = None,
                  **kwargs: Any) -> None:
         condition = kwargs.pop('condition', None)
         super().__init__(condition=condition)
         self.__name = name
         self.composable_node_descriptions = composable_node_descriptions or []
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         raise ComposableNodesUnavailableError(
             UNAVAILABLE.format(what=f'ComposableNodeContainer {_describe(self.__name)}'))
 
@@ -55,7 +55,7 @@ class LoadComposableNodes(Action):
         self.composable_node_descriptions = composable_node_descriptions
         self.__target = target_container
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         target = getattr(self.__target, 'name', None) or self.__target
         raise ComposableNodesUnavailableError(
             UNAVAILABLE.format(what=f'LoadComposableNodes into {_describe(target)}'))

@@ -6,7 +6,7 @@ node's `<node>/change_state` service and `<node>/transition_event` topic.
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import LaunchContext
 
@@ -19,16 +19,16 @@ class LifecycleNode(Node):
 
     def __init__(self, *, name: Any, namespace: Any, **kwargs: Any) -> None:
         super().__init__(name=name, namespace=namespace, **kwargs)
-        self.__manager: Optional[LifecycleManager] = None
+        self.__manager: LifecycleManager | None = None
 
     @property
     def is_lifecycle_node(self) -> bool:
         return True
 
-    def get_lifecycle_event_manager(self) -> Optional[LifecycleManager]:
+    def get_lifecycle_event_manager(self) -> LifecycleManager | None:
         return self.__manager
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         entities = super().execute(context)
         self.__manager = LifecycleManager(self, context)
         self.__manager.start()

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any, Optional
+from typing import Any
 
 import lifecycle_msgs.msg
 from launch import Action, LaunchContext
@@ -54,7 +54,7 @@ class LifecycleTransition(Action):
                              f'wait for; expected one of {sorted(cls.transition_targets)}')
         return transition
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         entities: list[Any] = []
         for name_subs in self.__names:
             name = perform_text(context, name_subs)

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Sequence
-from typing import Any, Optional
+from typing import Any
 
 from launch import LaunchContext
 from launch.actions import ExecuteProcess
@@ -46,10 +46,10 @@ class Node(ExecuteProcess):
 
     def __init__(self, *, executable: Any, package: Any = None, name: Any = None,
                  namespace: Any = None, exec_name: Any = None,
-                 parameters: Optional[Sequence[Any]] = None,
-                 remappings: Optional[Iterable[Any]] = None,
-                 ros_arguments: Optional[Iterable[Any]] = None,
-                 arguments: Optional[Iterable[Any]] = None, **kwargs: Any) -> None:
+                 parameters: Sequence[Any] | None = None,
+                 remappings: Iterable[Any] | None = None,
+                 ros_arguments: Iterable[Any] | None = None,
+                 arguments: Iterable[Any] | None = None, **kwargs: Any) -> None:
         if package is not None:
             cmd: list[Any] = [ExecutableInPackage(executable=executable, package=package)]
         else:
@@ -74,8 +74,8 @@ class Node(ExecuteProcess):
         self.__ros_arguments = ros_arguments
         self.__expanded_node_name = self.UNSPECIFIED_NODE_NAME
         self.__expanded_node_namespace = self.UNSPECIFIED_NODE_NAMESPACE
-        self.__final_node_name: Optional[str] = None
-        self.__expanded_remappings: Optional[list[tuple[str, str]]] = None
+        self.__final_node_name: str | None = None
+        self.__expanded_remappings: list[tuple[str, str]] | None = None
         self.__logger = get_logger(_logger_name)
         # Named, as given, in the error Jazzy logs when name or namespace fail to expand.
         self.__given_identity = (f'package={package}, executable={executable}, '
@@ -100,7 +100,7 @@ class Node(ExecuteProcess):
         return self.__expanded_node_namespace
 
     @property
-    def expanded_remapping_rules(self) -> Optional[list[tuple[str, str]]]:
+    def expanded_remapping_rules(self) -> list[tuple[str, str]] | None:
         return self.__expanded_remappings
 
     @property
@@ -112,8 +112,8 @@ class Node(ExecuteProcess):
                 and self.__expanded_node_namespace != self.UNSPECIFIED_NODE_NAMESPACE)
 
     # -- execution --------------------------------------------------------------------
-    def _expand_name_and_namespace(self, context: LaunchContext) -> tuple[Optional[str],
-                                                                        Optional[str]]:
+    def _expand_name_and_namespace(self, context: LaunchContext) -> tuple[str | None,
+                                                                        str | None]:
         name = None if self.__node_name is None else perform_text(context, self.__node_name)
         own_ns = (None if self.__node_namespace is None
                   else perform_text(context, self.__node_namespace))
@@ -125,14 +125,14 @@ class Node(ExecuteProcess):
             self.__expanded_node_namespace = namespace
         return name or None, namespace
 
-    def _parameter_file_key(self, name: Optional[str], namespace: Optional[str]) -> str:
+    def _parameter_file_key(self, name: str | None, namespace: str | None) -> str:
         """Jazzy keys a parameter dict by '/ns/name' only when both are known (goldens 02, 17)."""
         if name and namespace:
             return fully_qualified_name(namespace, name)
         return '/**'
 
-    def _parameter_arguments(self, context: LaunchContext, name: Optional[str],
-                             namespace: Optional[str]) -> list[ParameterArgument]:
+    def _parameter_arguments(self, context: LaunchContext, name: str | None,
+                             namespace: str | None) -> list[ParameterArgument]:
         entries: list[ParameterArgument] = []
         global_entries = global_parameter_entries(global_params(context))
         evaluated = evaluate_parameters(context, self.__parameters)
@@ -154,7 +154,7 @@ class Node(ExecuteProcess):
                     entries.append(checked)
         return entries
 
-    def _checked_file(self, path: str) -> Optional[ParamFileArg]:
+    def _checked_file(self, path: str) -> ParamFileArg | None:
         """A missing parameter file only earns a warning in Jazzy (golden 25)."""
         if os.path.isfile(path):
             return ParamFileArg(path)
@@ -182,7 +182,7 @@ class Node(ExecuteProcess):
         return self.__base_cmd + [normalize_to_list_of_substitutions(arg)
                                   for arg in self.__described_name_args]
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         ensure_cleanup_registered(context)
         tail = self._ros_command_tail(context)
         self.cmd[:] = self.__base_cmd + [normalize_to_list_of_substitutions(arg) for arg in tail]

@@ -1,7 +1,7 @@
 """PushRosNamespace: prefix the namespace of every node that follows in scope."""
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import Action, LaunchContext
 from launch.utilities import normalize_to_list_of_substitutions
@@ -26,7 +26,7 @@ class PushRosNamespace(Action):
     def namespace(self) -> list[Any]:
         return self.__namespace
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         namespace = perform_text(context, self.__namespace)
         pushed = prefix_namespace(pushed_namespace(context), namespace)
         if pushed:

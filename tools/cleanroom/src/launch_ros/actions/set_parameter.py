@@ -1,7 +1,7 @@
 """SetParameter: a parameter every node in scope gets as `-p name:=value` (golden 07)."""
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import Action, LaunchContext
 
@@ -24,6 +24,6 @@ class SetParameter(Action):
     def value(self) -> Any:
         return self.__param.value
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         add_global_param(context, self.__param.evaluate(context))
         return None

@@ -1,7 +1,7 @@
 """SetParametersFromFile: a parameter file every node in scope gets first (golden 17)."""
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import Action, LaunchContext
 
@@ -24,7 +24,7 @@ class SetParametersFromFile(Action):
     def param_file(self) -> ParameterFile:
         return self.__param_file
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         ensure_cleanup_registered(context)
         add_global_param(context, str(self.__param_file.evaluate(context)))
         return None

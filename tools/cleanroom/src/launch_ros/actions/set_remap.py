@@ -1,7 +1,7 @@
 """SetRemap: a remapping rule every node in scope gets (golden 07)."""
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import Action, LaunchContext
 from launch.utilities import normalize_to_list_of_substitutions
@@ -29,7 +29,7 @@ class SetRemap(Action):
     def dst(self) -> list[Any]:
         return self.__dst
 
-    def execute(self, context: LaunchContext) -> Optional[list[Any]]:
+    def execute(self, context: LaunchContext) -> list[Any] | None:
         add_global_remap(context, (perform_text(context, self.__src),
                                    perform_text(context, self.__dst)))
         return None

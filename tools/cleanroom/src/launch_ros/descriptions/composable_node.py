@@ -6,16 +6,16 @@ load), but nothing in this clean room can run it: see ComposableNodeContainer.
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from typing import Any, Optional
+from typing import Any
 
 
 class ComposableNode:
     """Describe a composable node (package, plugin class, name, parameters, ...)."""
 
     def __init__(self, *, package: Any, plugin: Any, name: Any = None, namespace: Any = None,
-                 parameters: Optional[Sequence[Any]] = None,
-                 remappings: Optional[Iterable[Any]] = None,
-                 extra_arguments: Optional[Sequence[Any]] = None,
+                 parameters: Sequence[Any] | None = None,
+                 remappings: Iterable[Any] | None = None,
+                 extra_arguments: Sequence[Any] | None = None,
                  condition: Any = None) -> None:
         self.package = package
         self.node_plugin = plugin

@@ -1,7 +1,8 @@
 """OnStateTransition: run entities when a lifecycle node reaches a state."""
 from __future__ import annotations
 
-from typing import Any, Callable, Optional
+from collections.abc import Callable
+from typing import Any
 
 from launch import EventHandler
 
@@ -17,9 +18,9 @@ class OnStateTransition(EventHandler):
     """
 
     def __init__(self, *, entities: Any, target_lifecycle_node: Any = None,
-                 transition: Optional[str] = None, start_state: Optional[str] = None,
-                 goal_state: Optional[str] = None,
-                 matcher: Optional[Callable[[Any], bool]] = None, **kwargs: Any) -> None:
+                 transition: str | None = None, start_state: str | None = None,
+                 goal_state: str | None = None,
+                 matcher: Callable[[Any], bool] | None = None, **kwargs: Any) -> None:
         self.__target = target_lifecycle_node
         self.__filters = {'transition': transition, 'start_state': start_state,
                           'goal_state': goal_state}

@@ -1,7 +1,8 @@
 """Predicates that pick a lifecycle node action, for ChangeState's matcher."""
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 
 def matches_node_name(node_name: str) -> Callable[[Any], bool]:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
-from typing import Any, Optional, Union
+from typing import Any
 
 from .parameter_values import format_parameter_argument
 
@@ -32,7 +32,7 @@ class ParamArg:
     value: Any
 
 
-ParameterArgument = Union[ParamFileArg, ParamArg]
+ParameterArgument = ParamFileArg | ParamArg
 
 
 def parameter_arguments(entries: Iterable[ParameterArgument]) -> list[str]:
@@ -65,7 +65,7 @@ def global_parameter_entries(global_params: Iterable[Any]) -> list[ParameterArgu
     return entries
 
 
-def ros_specific_arguments(*, name: Optional[str] = None, namespace: Optional[str] = None,
+def ros_specific_arguments(*, name: str | None = None, namespace: str | None = None,
                            parameters: Sequence[ParameterArgument] = (),
                            remappings: Sequence[tuple[str, str]] = ()) -> list[str]:
     """Everything after the final `--ros-args`; `parameters`/`remappings` already merged."""
@@ -80,8 +80,8 @@ def ros_specific_arguments(*, name: Optional[str] = None, namespace: Optional[st
 
 
 def node_command_line(executable: str, *, arguments: Sequence[str] = (),
-                      ros_arguments: Sequence[str] = (), name: Optional[str] = None,
-                      namespace: Optional[str] = None,
+                      ros_arguments: Sequence[str] = (), name: str | None = None,
+                      namespace: str | None = None,
                       parameters: Sequence[ParameterArgument] = (),
                       remappings: Sequence[tuple[str, str]] = ()) -> list[str]:
     """The full argv of a node (used by tests; Node itself builds it piecewise)."""

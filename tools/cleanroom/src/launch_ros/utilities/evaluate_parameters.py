@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, Union
+from typing import Any
 
 from launch import LaunchContext
 
@@ -17,7 +17,7 @@ from .. import parameter_descriptions as descriptions
 from .normalize_parameters import NormalizedParameter, NormalizedParameterDict
 from .substitution_values import perform_text
 
-EvaluatedParameter = Union[Path, tuple[str, Any], dict[str, Any]]
+EvaluatedParameter = Path | tuple[str, Any] | dict[str, Any]
 
 
 def _key_part(context: LaunchContext, part: Any) -> str:

@@ -5,8 +5,6 @@ tested on their own.
 """
 from __future__ import annotations
 
-from typing import Optional
-
 
 def is_namespace_absolute(namespace: str) -> bool:
     """A namespace starting with '/' ignores every pushed namespace."""
@@ -24,7 +22,7 @@ def make_namespace_absolute(namespace: str) -> str:
     return '/' + namespace
 
 
-def prefix_namespace(base_ns: Optional[str], namespace: Optional[str]) -> Optional[str]:
+def prefix_namespace(base_ns: str | None, namespace: str | None) -> str | None:
     """Compose a pushed namespace with a node's (or another push's) namespace.
 
     An absolute `namespace` replaces the base, a relative one is appended to
@@ -38,7 +36,7 @@ def prefix_namespace(base_ns: Optional[str], namespace: Optional[str]) -> Option
     return base_ns.rstrip('/') + '/' + namespace
 
 
-def full_node_namespace(pushed: Optional[str], namespace: Optional[str]) -> Optional[str]:
+def full_node_namespace(pushed: str | None, namespace: str | None) -> str | None:
     """The absolute namespace a node ends up in, or None if it has none at all."""
     composed = prefix_namespace(pushed, namespace)
     if composed is None:
@@ -46,7 +44,7 @@ def full_node_namespace(pushed: Optional[str], namespace: Optional[str]) -> Opti
     return make_namespace_absolute(composed)
 
 
-def fully_qualified_name(namespace: Optional[str], name: str) -> str:
+def fully_qualified_name(namespace: str | None, name: str) -> str:
     """'/ns/name' as ROS prints it ('/name' in the root namespace)."""
     if not namespace or is_root_namespace(namespace):
         return '/' + name

@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any, Union
+from typing import Any
 
 from launch import Substitution
 
@@ -22,7 +22,7 @@ from .. import parameter_descriptions as descriptions
 
 # {name parts: ParameterValue}; ParameterFile | Parameter | that dict.
 NormalizedParameterDict = dict[tuple[Any, ...], Any]
-NormalizedParameter = Union[Any, NormalizedParameterDict]
+NormalizedParameter = Any | NormalizedParameterDict
 
 
 def _is_path_like(entry: Any) -> bool:

@@ -7,7 +7,7 @@ copied the dictionary cannot leak its additions to the parent.
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from launch import LaunchContext
 
@@ -16,7 +16,7 @@ GLOBAL_PARAMS_KEY = 'global_params'
 REMAPS_KEY = 'ros_remaps'
 
 
-def pushed_namespace(context: LaunchContext) -> Optional[str]:
+def pushed_namespace(context: LaunchContext) -> str | None:
     return context.launch_configurations.get(NAMESPACE_KEY) or None
 
 

@@ -1,7 +1,7 @@
 """ReadyToTest: the point in a launch description where active tests may start."""
 from __future__ import annotations
 
-from typing import Callable, List, Optional
+from collections.abc import Callable
 
 from launch import Action, LaunchContext, LaunchDescriptionEntity
 
@@ -22,13 +22,13 @@ class ReadyToTest(Action):
 
     def __init__(self, **kwargs) -> None:
         super().__init__(**kwargs)
-        self.__callbacks: List[Callable[[], None]] = []
+        self.__callbacks: list[Callable[[], None]] = []
 
     def _add_callback(self, callback: Callable[[], None]) -> None:
         """Register what to call once this action runs (used by the test runners)."""
         self.__callbacks.append(callback)
 
-    def execute(self, context: LaunchContext) -> Optional[List[LaunchDescriptionEntity]]:
+    def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
         """Signal readiness to every registered runner."""
         for callback in [*self.__callbacks, *getattr(context, _CONTEXT_CALLBACKS, [])]:
             callback()

@@ -1,7 +1,7 @@
 """assertExitCodes: every (or one) process ended with an allowed exit code."""
 from __future__ import annotations
 
-from typing import Iterable, Optional
+from collections.abc import Iterable
 
 from ..util.proc_lookup import proc_name, resolveProcesses
 
@@ -13,7 +13,7 @@ EXIT_FORCED = 1
 
 
 def assertExitCodes(proc_info, allowable_exit_codes: Iterable[int] = (EXIT_OK,),
-                    process=None, cmd_args: Optional[str] = None, *,
+                    process=None, cmd_args: str | None = None, *,
                     strict_proc_matching: bool = True) -> None:
     """Fail with 'Proc NAME exited with code N' for a process whose code is not allowed."""
     allowed = list(allowable_exit_codes)

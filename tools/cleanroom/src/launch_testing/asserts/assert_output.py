@@ -1,8 +1,6 @@
 """assertInStdout / assertInStderr: a process's output contains a text."""
 from __future__ import annotations
 
-from typing import Optional
-
 from ..io_handler import _found
 from ..util.proc_lookup import resolveProcesses
 
@@ -12,9 +10,9 @@ def assertDefaultStream() -> str:
     return 'stderr'
 
 
-def assertInStream(proc_output, expected_output, process=None, cmd_args: Optional[str] = None,
+def assertInStream(proc_output, expected_output, process=None, cmd_args: str | None = None,
                    *, output_filter=None, strict_proc_matching: bool = True,
-                   stream: Optional[str] = None) -> None:
+                   stream: str | None = None) -> None:
     """Fail unless one matching process wrote `expected_output` to `stream`."""
     processes = resolveProcesses(proc_output, process=process, cmd_args=cmd_args,
                                  strict_proc_matching=strict_proc_matching)
@@ -29,14 +27,14 @@ def assertInStream(proc_output, expected_output, process=None, cmd_args: Optiona
                          f'matching processes: {names}')
 
 
-def assertInStdout(proc_output, expected_output, process=None, cmd_args: Optional[str] = None,
+def assertInStdout(proc_output, expected_output, process=None, cmd_args: str | None = None,
                    *, output_filter=None, strict_proc_matching: bool = True) -> None:
     """Fail unless the process wrote `expected_output` to standard output."""
     assertInStream(proc_output, expected_output, process, cmd_args, output_filter=output_filter,
                    strict_proc_matching=strict_proc_matching, stream='stdout')
 
 
-def assertInStderr(proc_output, expected_output, process=None, cmd_args: Optional[str] = None,
+def assertInStderr(proc_output, expected_output, process=None, cmd_args: str | None = None,
                    *, output_filter=None, strict_proc_matching: bool = True) -> None:
     """Fail unless the process wrote `expected_output` to standard error."""
     assertInStream(proc_output, expected_output, process, cmd_args, output_filter=output_filter,

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import contextlib
-from typing import Iterator, List, Optional
+from collections.abc import Iterator
 
 from ..util.proc_lookup import resolveProcesses
 
@@ -11,7 +11,7 @@ class SequentialTextChecker:
     """Finds texts one after another, each after the end of the previous match."""
 
     def __init__(self, output: str) -> None:
-        self._lines: List[str] = output.splitlines()
+        self._lines: list[str] = output.splitlines()
         self._line = 0
         self._column = 0
 
@@ -38,7 +38,7 @@ class SequentialTextChecker:
 
 
 @contextlib.contextmanager
-def assertSequentialStdout(proc_output, process, cmd_args: Optional[str] = None
+def assertSequentialStdout(proc_output, process, cmd_args: str | None = None
                            ) -> Iterator[SequentialTextChecker]:
     """Context manager giving a checker over the stdout of one process."""
     proc = resolveProcesses(proc_output, process=process, cmd_args=cmd_args)[0]

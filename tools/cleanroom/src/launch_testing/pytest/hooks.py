@@ -15,7 +15,6 @@ import sys
 import tempfile
 import xml.etree.ElementTree as ET
 from pathlib import Path
-from typing import List, Optional
 
 import pytest
 
@@ -83,7 +82,7 @@ class LaunchTestItem(pytest.Item):
         return self.path, None, f'launch_test {self.path.name}'
 
 
-def _run_in_own_group(command: List[str], cwd: str) -> tuple:
+def _run_in_own_group(command: list[str], cwd: str) -> tuple:
     """Run the command in a new session; kill the whole group if it is interrupted."""
     process = subprocess.Popen(command, cwd=cwd, stdin=subprocess.DEVNULL,
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
@@ -119,7 +118,7 @@ def _group_alive(pgid: int) -> bool:
     return True
 
 
-def _failed_tests(report: str) -> Optional[List[str]]:
+def _failed_tests(report: str) -> list[str] | None:
     """'FAIL: name' / 'ERROR: name' lines from the JUnit report, if one was written."""
     if not os.path.exists(report):
         return None

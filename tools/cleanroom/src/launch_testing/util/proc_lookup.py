@@ -1,7 +1,7 @@
 """Find the processes a test names: by action, by name, and by command-line args."""
 from __future__ import annotations
 
-from typing import Iterable, List, Optional
+from collections.abc import Iterable
 
 from launch.actions import ExecuteProcess
 
@@ -26,7 +26,7 @@ def _proc_to_name_and_args(process: ExecuteProcess) -> str:
     return ' '.join([str(details['name']), *[str(arg) for arg in details['cmd'][1:]]])
 
 
-def _matches_args(process: ExecuteProcess, cmd_args: Optional[str]) -> bool:
+def _matches_args(process: ExecuteProcess, cmd_args: str | None) -> bool:
     if cmd_args is None:
         return True
     details = process.process_details
@@ -34,8 +34,8 @@ def _matches_args(process: ExecuteProcess, cmd_args: Optional[str]) -> bool:
     return cmd_args in args
 
 
-def resolveProcesses(info_obj, *, process=None, cmd_args: Optional[str] = None,
-                     strict_proc_matching: bool = True) -> List[ExecuteProcess]:
+def resolveProcesses(info_obj, *, process=None, cmd_args: str | None = None,
+                     strict_proc_matching: bool = True) -> list[ExecuteProcess]:
     """The recorded processes `info_obj` (a proc_info or proc_output) has for the query.
 
     `process` is an ExecuteProcess action, a name (matched as a substring of the

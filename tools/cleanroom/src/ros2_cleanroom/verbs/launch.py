@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 import os
 import sys
-from typing import List, Optional, Tuple
 
 from ros2_cleanroom.verb_args import unrecognized_arguments
 
@@ -36,7 +35,7 @@ def _parser() -> argparse.ArgumentParser:
     group.add_argument('-s', '--show-args', '--show-arguments', action='store_true',
                        help='Show arguments that may be given to the launch file.')
     parser.add_argument('-a', '--show-all-subprocesses-output', action='store_true',
-                        help='Show all launched subprocesses\' output by overriding their '
+                        help="Show all launched subprocesses' output by overriding their "
                              'output configuration using the OVERRIDE_LAUNCH_PROCESS_OUTPUT '
                              'envvar.')
     parser.add_argument('--launch-prefix', metavar='LAUNCH_PREFIX',
@@ -77,7 +76,7 @@ def find_launch_file_in_package(package: str, file_name: str) -> str:
     return matches[0]
 
 
-def resolve_launch_file(args: argparse.Namespace) -> Tuple[str, List[str]]:
+def resolve_launch_file(args: argparse.Namespace) -> tuple[str, list[str]]:
     """Return (launch file path, launch argument strings) for PKG FILE or PATH forms."""
     if os.path.isfile(args.package_name):
         extra = [args.launch_file_name] if args.launch_file_name is not None else []
@@ -89,7 +88,7 @@ def resolve_launch_file(args: argparse.Namespace) -> Tuple[str, List[str]]:
             list(args.launch_arguments))
 
 
-def parse_launch_arguments(arguments: List[str]) -> List[Tuple[str, str]]:
+def parse_launch_arguments(arguments: list[str]) -> list[tuple[str, str]]:
     """Split `name:=value` items; anything else is an error naming the item."""
     parsed = []
     for argument in arguments:
@@ -121,9 +120,9 @@ def _load_description(path: str) -> object:
     return get_launch_description_from_any_launch_file(path)
 
 
-def launch_a_launch_file(path: str, arguments: List[Tuple[str, str]], *, debug: bool,
-                         noninteractive: bool, launch_prefix: Optional[str],
-                         launch_prefix_filter: Optional[str]) -> int:
+def launch_a_launch_file(path: str, arguments: list[tuple[str, str]], *, debug: bool,
+                         noninteractive: bool, launch_prefix: str | None,
+                         launch_prefix_filter: str | None) -> int:
     """Run the launch file until it is done; return the launch's exit code."""
     import launch
     from launch.actions import IncludeLaunchDescription, SetLaunchConfiguration
@@ -142,7 +141,7 @@ def launch_a_launch_file(path: str, arguments: List[Tuple[str, str]], *, debug: 
     return service.run()
 
 
-def main(argv: List[str]) -> int:
+def main(argv: list[str]) -> int:
     """Entry point of `ros2 launch`; returns the exit code."""
     args, unknown = _parser().parse_known_args(argv)
     if unknown:  # reported by ros2cli's top-level parser, as for every verb

@@ -1,6 +1,6 @@
 """Predicates on ExecuteProcess actions, for ProcessTargetedEvent."""
 import os
-from typing import Callable
+from collections.abc import Callable
 
 
 def matches_pid(*pids: int) -> Callable[[object], bool]:

@@ -1,5 +1,5 @@
 """Write to the standard input of some processes."""
-from typing import Callable
+from collections.abc import Callable
 
 from .process_targeted_event import ProcessTargetedEvent
 

@@ -1,5 +1,5 @@
 """Base of events addressed to some processes."""
-from typing import Callable
+from collections.abc import Callable
 
 from ...event import Event
 

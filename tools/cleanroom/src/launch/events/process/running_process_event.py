@@ -1,5 +1,4 @@
 """Base of the events about a started process."""
-from typing import Dict, List, Optional
 
 from ...event import Event
 
@@ -9,8 +8,8 @@ class RunningProcessEvent(Event):
 
     name = 'launch.events.process.RunningProcessEvent'
 
-    def __init__(self, *, action: object, name: str, cmd: List[str], cwd: Optional[str],
-                 env: Optional[Dict[str, str]], pid: int) -> None:
+    def __init__(self, *, action: object, name: str, cmd: list[str], cwd: str | None,
+                 env: dict[str, str] | None, pid: int) -> None:
         self.__action = action
         self.__name = name
         self.__cmd = cmd
@@ -34,17 +33,17 @@ class RunningProcessEvent(Event):
         return self.__name
 
     @property
-    def cmd(self) -> List[str]:
+    def cmd(self) -> list[str]:
         """The command line, one string per argument."""
         return self.__cmd
 
     @property
-    def cwd(self) -> Optional[str]:
+    def cwd(self) -> str | None:
         """The working directory, or None for the launch's."""
         return self.__cwd
 
     @property
-    def env(self) -> Optional[Dict[str, str]]:
+    def env(self) -> dict[str, str] | None:
         """The full environment the process got."""
         return self.__env
 
@@ -54,7 +53,7 @@ class RunningProcessEvent(Event):
         return self.__pid
 
     @property
-    def process_details(self) -> Dict[str, object]:
+    def process_details(self) -> dict[str, object]:
         """All of the above as a dict."""
         return {'name': self.__name, 'cmd': self.__cmd, 'cwd': self.__cwd, 'env': self.__env,
                 'pid': self.__pid}

@@ -1,6 +1,6 @@
 """Send a signal to some processes."""
 import signal as signal_module
-from typing import Callable, Union
+from collections.abc import Callable
 
 from .process_targeted_event import ProcessTargetedEvent
 
@@ -10,7 +10,7 @@ class SignalProcess(ProcessTargetedEvent):
 
     name = 'launch.events.process.SignalProcess'
 
-    def __init__(self, *, signal_number: Union[int, str, signal_module.Signals],
+    def __init__(self, *, signal_number: int | str | signal_module.Signals,
                  process_matcher: Callable[[object], bool]) -> None:
         super().__init__(process_matcher=process_matcher)
         if isinstance(signal_number, str):

@@ -1,7 +1,8 @@
 """ChangeState: ask the LifecycleNode actions picked by a matcher to make a transition."""
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 import lifecycle_msgs.msg
 from launch import Event
