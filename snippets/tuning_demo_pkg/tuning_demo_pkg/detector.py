@@ -1,7 +1,8 @@
 """A pretend object detector: subscribes to "image", publishes on "detections".
 
 Detection runs on a timer at `detect_rate` results per second, each time on
-the newest frame received; the result is the fraction of bright pixels.
+the newest frame received; the result is the fraction of bright pixels in
+a square at the centre of the image.
 """
 import numpy as np
 from rclpy.node import Node
@@ -12,6 +13,7 @@ from tuning_demo_pkg.image_qos import declare_image_qos
 from tuning_demo_pkg.spinning import run
 
 BRIGHT = 200  # a pixel whose red value is above this counts as bright
+SQUARE = 64  # pixels, side of the square looked at
 
 
 class Detector(Node):
@@ -35,8 +37,14 @@ class Detector(Node):
         if self.newest is None:
             return
         message, self.newest = self.newest, None
-        pixels = np.frombuffer(message.data, dtype=np.uint8)
-        bright = float(np.count_nonzero(pixels[0::3] > BRIGHT)) / (message.width * message.height)
+        pixels = np.frombuffer(message.data, dtype=np.uint8).reshape(
+            message.height, message.width, 3)
+        side = min(SQUARE, message.height, message.width)
+        top, left = (message.height - side) // 2, (message.width - side) // 2
+        red = pixels[top:top + side, left:left + side, 0]
+        if red.size == 0:
+            return
+        bright = float(np.count_nonzero(red > BRIGHT)) / red.size
         self.publisher.publish(Float32(data=bright))
         self.get_logger().info(f'Bright fraction {bright:.3f}', throttle_duration_sec=1.0)
 
