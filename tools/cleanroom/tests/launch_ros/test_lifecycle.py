@@ -70,7 +70,8 @@ def test_change_state_events_drive_node_to_active(test_package, run_launch):
             entities=[probe_then_shutdown('/lr/lc_talker/get_state', states)])),
         EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
                                     transition_id=T.TRANSITION_CONFIGURE)),
-        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+        # a hang guard, not a speed limit: a loaded CI box once took over 15 s
+        TimerAction(period=60.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     assert record.returncode == 0
     assert states == ['active']
@@ -94,7 +95,8 @@ def test_lifecycle_transition_action_walks_the_chain(test_package, run_launch):
         RegisterEventHandler(OnStateTransition(
             matcher=lambda e: isinstance(e, StateTransition) and e.goal_state == 'active',
             entities=[probe_then_shutdown('/walker/get_state', states)])),
-        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+        # a hang guard, not a speed limit: a loaded CI box once took over 15 s
+        TimerAction(period=60.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     assert states == ['active']
 
@@ -111,7 +113,8 @@ def test_refused_transition_is_logged(test_package, run_launch, capfd):
             target_lifecycle_node=node, start_state='configuring', goal_state='unconfigured',
             entities=[TimerAction(period=0.3, actions=[
                 probe_then_shutdown('/lr/refuser/get_state', states)])])),
-        TimerAction(period=15.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+        # a hang guard, not a speed limit: a loaded CI box once took over 15 s
+        TimerAction(period=60.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
     ])
     out = capfd.readouterr()
     assert states == ['unconfigured']
