@@ -5,7 +5,9 @@ import hashlib
 from collections.abc import Iterable
 from pathlib import Path
 
-_SKIP_PARTS = {'__pycache__', '.pytest_cache', '.ruff_cache'}
+#: Caches that tools write beside sources; their content is not the sources'.
+_SKIP_PARTS = {'__pycache__', '.pytest_cache', '.ruff_cache', '.grimp_cache',
+               '.import_linter_cache'}
 _SKIP_SUFFIXES = ('.pyc', '.pyo')
 
 
