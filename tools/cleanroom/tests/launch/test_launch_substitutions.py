@@ -70,7 +70,9 @@ def test_launch_configuration_default_and_missing(context):
 def test_path_join(context):
     path = PathJoinSubstitution(['/opt', LaunchConfiguration('robot'), 'cfg.yaml'])
     assert path.perform(context) == '/opt/bot/cfg.yaml'
-    assert (PathJoinSubstitution(['/a']) / 'b' / 'c').perform(context) == '/a/b/c'
+    # `/` arrived after Jazzy: a file using it here would fail on Jazzy
+    with pytest.raises(TypeError, match='unsupported operand'):
+        PathJoinSubstitution(['/a']) / 'b'
 
 
 def test_python_expression(context):

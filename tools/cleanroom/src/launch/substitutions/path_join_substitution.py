@@ -25,10 +25,6 @@ class PathJoinSubstitution(Substitution):
         """The components, each a list of substitutions."""
         return self.__components
 
-    def __truediv__(self, other: SomeSubstitutionsType) -> PathJoinSubstitution:
-        """`PathJoinSubstitution([...]) / 'file.yaml'` appends a component."""
-        return PathJoinSubstitution([*self.__components, other])
-
     def describe(self) -> str:
         """Return a description of the components."""
         parts = ', '.join(' + '.join(s.describe() for s in c) for c in self.__components)
