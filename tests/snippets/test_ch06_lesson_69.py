@@ -1,7 +1,9 @@
 """Lesson 6.9 (debugging multi-node communication with an assistant): the
-stored prompts and replies are unchanged, the second prompt still pastes the
-package's code as it is, and every experiment the lesson shows gives the
-result the lesson states (above all the one-sided fixes).
+stored prompts and replies are unchanged, the shortest question comes first,
+the second prompt still pastes the package's code as it is, and every
+experiment the lesson shows gives the result the lesson states (above all
+the measurements that reject the shortest reply's bet, and the one-sided
+fixes).
 
 The lesson's experiments are repeated here as a student's terminal would
 run them: `ros2 run` with a durability parameter, the launch files, late
@@ -26,6 +28,8 @@ DRAFTS = paths.SNIPPETS / 'ai_drafts' / 'ch06_09_speed_limit'
 PACKAGE = paths.SNIPPETS / 'comms_demo_pkg'
 #: sha256 of each stored prompt and reply, as the assistant got and gave them.
 STORED = {
+    'zero_prompt.md': 'bc3c8316be570f8bd480e00054f08ce796bc4bcbaff6d4f454bb2c6fbf0e143e',
+    'zero_response.md': '7795a2c95c9393baf71258dd4576dd1dbf8651bfed51d2ef7e1af5dc178fd5b0',
     'first_prompt.md': '7109a2a6245b0324d60ca0e95ad164d0a1f589149bb85e0d6f9fa69ca1205802',
     'first_response.md': '8229cddb4efd7cb355ed4a65677cc7fd33169eb41df28a2f3163fda3508c0be8',
     'prompt.md': '84810855ff69a398f9227168eb2e614a8dd603cf4cfe05ec851753e06f32148b',
@@ -51,14 +55,29 @@ def _late_echo(env: dict[str, str], *options: str) -> subprocess.CompletedProces
     return _ros2(env, 'topic', 'echo', '/speed_limit', *options, '--once', '--timeout', ECHO_WAIT)
 
 
+def _topic_info(env: dict[str, str]) -> str:
+    """`ros2 topic info -v /speed_limit`, once both endpoints are discovered."""
+    def read() -> str:
+        info = _ros2(env, 'topic', 'info', '-v', '/speed_limit').stdout
+        return info if info.count('Endpoint type:') == 2 else ''
+    return wait_for(read, HANG_GUARD, 'both /speed_limit endpoints in topic info -v')
+
+
 def _durabilities(env: dict[str, str]) -> dict[str, str]:
     """PUBLISHER / SUBSCRIPTION -> durability of that /speed_limit endpoint (the lesson
-    greps these lines), once both endpoints are discovered."""
-    def read() -> dict[str, str]:
-        info = _ros2(env, 'topic', 'info', '-v', '/speed_limit').stdout
-        found = re.findall(r'Endpoint type: (\S+)\n(?:.*\n)*?\s+Durability: (\S+)', info)
-        return dict(found) if len(found) == 2 else {}
-    return wait_for(read, HANG_GUARD, 'both /speed_limit endpoints in topic info -v')
+    greps these lines)."""
+    return dict(re.findall(r'Endpoint type: (\S+)\n(?:.*\n)*?\s+Durability: (\S+)',
+                           _topic_info(env)))
+
+
+def _publishers(env: dict[str, str]) -> tuple[str, list[str]]:
+    """The publisher count `topic info -v` states, and the node of each publisher
+    endpoint it lists (the lesson rejects "another topic name" with these lines)."""
+    info = _topic_info(env)
+    count = re.search(r'^Publisher count: (\d+)$', info, re.MULTILINE).group(1)
+    nodes = [re.search(r'^Node name: (\S+)$', block, re.MULTILINE).group(1)
+             for block in info.split('\n\n') if 'Endpoint type: PUBLISHER' in block]
+    return count, nodes
 
 
 def _qos_status(env: dict[str, str]) -> str:
@@ -86,6 +105,14 @@ def test_the_lesson_shows_every_stored_prompt_and_reply():
         assert f'```{{snippet}} ai_drafts/ch06_09_speed_limit/{name}\n' in lesson, name
 
 
+def test_the_lesson_asks_the_shortest_question_first():
+    """The symptom-only question is what a student sends before collecting anything."""
+    lesson = LESSON.read_text()
+    order = [lesson.index(f'ai_drafts/ch06_09_speed_limit/{name}')
+             for name in ('zero_prompt.md', 'first_prompt.md', 'prompt.md')]
+    assert order == sorted(order)
+
+
 def test_the_second_prompt_pastes_the_package_as_it_is():
     """If the launch file or a node changes, the stored prompt no longer describes it."""
     blocks = re.findall(r'```python\n(.*?)```', (DRAFTS / 'prompt.md').read_text(), re.DOTALL)
@@ -100,6 +127,9 @@ def test_broken_system_late_echoes_get_nothing_and_a_new_publish_arrives(ros_env
                        cwd=paths.WORKSPACE) as broken:
         broken.wait_for_nodes(NODES, timeout=HANG_GUARD)
         broken.wait_for_output(WARNING, timeout=HANG_GUARD)
+        # The shortest reply's bet (another topic name) and its "never publishes": rejected.
+        assert _publishers(ros_env) == ('1', ['limit_server'])
+        assert re.search(PUBLISHED, broken.output()), broken.output()
         assert _durabilities(ros_env) == {'PUBLISHER': 'VOLATILE', 'SUBSCRIPTION': 'VOLATILE'}
         assert _qos_status(ros_env) == 'OK'
 
