@@ -7,7 +7,9 @@ one subscription per topic on labkit's hidden observer node, kept for
 of the topic is (a large message sent best effort loses fragments, and a
 whole frame with each; measured on 2.7 MB images: 3-10 of 30 per second
 arrived best effort, 24 reliable), otherwise best effort; always volatile,
-so that it matches any publisher.  The
+so that it matches any publisher.  A topic whose publisher was started
+a moment ago may not be discovered yet; the reliability is chosen once it is
+(or after `discovery` seconds, for a topic nobody publishes).  The
 subscriptions take messages serialized (never converted to Python), so the
 size of each is known for free: the bytes that cross the middleware.
 """
@@ -15,13 +17,13 @@ from __future__ import annotations
 
 import importlib
 import time
-from collections.abc import Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
-from rclpy.qos import QoSProfile, ReliabilityPolicy, qos_profile_sensor_data
+from rclpy.qos import QoSProfile, ReliabilityPolicy
 
 from labkit import observer
 from labkit.errors import LabkitError
@@ -57,10 +59,17 @@ def message_class(type_name: str) -> Any:
         raise LabkitError(f'cannot import the message type {type_name!r}') from None
 
 
-def measure_rates(topics: Mapping[str, str], window: float = 3.0) -> dict[str, Rate]:
+def measure_rates(topics: Mapping[str, str], window: float = 3.0,
+                  discovery: float = 5.0) -> dict[str, Rate]:
     """Rate and mean message size of each topic (name -> message type name),
-    all measured in one window."""
+    all measured in one window.
+
+    Waits up to `discovery` seconds for every topic to have a publisher in
+    the graph first: a reliable publisher not yet discovered would get a best
+    effort subscription, which loses large messages.
+    """
     obs = observer.observer()
+    wait_for_publishers(obs.node, topics, discovery)
     arrivals: dict[str, list[tuple[float, int]]] = {topic: [] for topic in topics}
     subscriptions = []
     for topic, type_name in topics.items():
@@ -83,12 +92,28 @@ def measure_rates(topics: Mapping[str, str], window: float = 3.0) -> dict[str, R
     return {topic: _rate(topic, seen, window) for topic, seen in arrivals.items()}
 
 
+def wait_for_publishers(node: Node, topics: Iterable[str], timeout: float) -> bool:
+    """Poll the graph until every topic has a publisher; False if `timeout` ran out."""
+    deadline = time.monotonic() + timeout
+    while not all(node.get_publishers_info_by_topic(topic) for topic in topics):
+        if time.monotonic() >= deadline:
+            return False
+        time.sleep(0.05)
+    return True
+
+
+#: Messages a measuring subscription queues while the executor catches up.
+#: With 10, a notebook took 64-100 % of 2.7 MB frames sent reliably at 30 fps
+#: (the queue overflowed during short stalls); with 50, all of them.
+QUEUE_DEPTH = 50
+
+
 def matching_qos(node: Node, topic: str) -> QoSProfile:
     """Reliable if every publisher seen offers it, else best effort (volatile both)."""
     offered = [info.qos_profile.reliability for info in node.get_publishers_info_by_topic(topic)]
-    if offered and all(reliability == ReliabilityPolicy.RELIABLE for reliability in offered):
-        return QoSProfile(depth=10, reliability=ReliabilityPolicy.RELIABLE)
-    return qos_profile_sensor_data
+    reliable = bool(offered) and all(r == ReliabilityPolicy.RELIABLE for r in offered)
+    return QoSProfile(depth=QUEUE_DEPTH, reliability=ReliabilityPolicy.RELIABLE if reliable
+                      else ReliabilityPolicy.BEST_EFFORT)
 
 
 def _rate(topic: str, seen: list[tuple[float, int]], window: float) -> Rate:
