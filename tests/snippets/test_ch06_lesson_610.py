@@ -37,7 +37,7 @@ MONITOR_COUNTS = r'\[monitor\]: [1-9]\d* detections in the last second'
 #: The lesson's rule (section "When does a change help?").
 WINDOW = 5.0
 DETECT_RATE = 5.0
-CPU_KEEP, MEMORY_KEEP, FRAMES_KEEP = 0.75, 0.90, 0.75
+CPU_KEEP, MEMORY_KEEP, FRAMES_KEEP = 0.75, 0.90, 0.80
 
 
 @dataclass
