@@ -120,15 +120,15 @@ def test_the_trial_file_without_arguments_is_the_baseline(ros_env):
     assert _parameters(ros_env, TRIAL) == _parameters(ros_env, BASELINE)
 
 
-#: step -> (launch file, arguments, reasons the rule drops it: empty = kept)
+#: step -> (launch file, arguments, reasons the rule drops it: empty = kept;
+#: None = the lesson leaves the verdict to the run, because the saving is
+#: within the memory noise or depends on load: only "the detections stay" is claimed)
 STEPS = {
     'no image_stats': (TRIAL, {'image_stats': False}, set()),
     '10 fps': (TRIAL, {'fps': 10.0}, set()),
-    # Depth 1 may also lose frames to a slow subscriber; the lesson only
-    # states that it saves nothing.
-    'depth 1': (TRIAL, {'depth': 1}, {'no saving'}),
+    'depth 1': (TRIAL, {'depth': 1}, None),
     'best effort, depth 1': (TRIAL, {'reliability': 'best_effort', 'depth': 1}, {'frames'}),
-    'one process': (TRIAL, {'one_process': True}, set()),
+    'one process': (TRIAL, {'one_process': True}, None),
     "the reply's file": (TRIAL, {'image_stats': False, 'fps': 10.0,
                                  'reliability': 'best_effort', 'depth': 1,
                                  'one_process': True}, {'frames'}),
@@ -137,7 +137,7 @@ STEPS = {
 
 
 @pytest.fixture(scope='module', params=list(STEPS))
-def step(request, ros_env) -> Iterator[tuple[str, Measurement, set[str]]]:
+def step(request, ros_env) -> Iterator[tuple[str, Measurement, set[str] | None]]:
     launch_file, arguments, reasons = STEPS[request.param]
     yield request.param, _measure(ros_env, launch_file, **arguments), reasons
 
@@ -145,7 +145,9 @@ def step(request, ros_env) -> Iterator[tuple[str, Measurement, set[str]]]:
 def test_each_step_gets_the_lessons_decision(baseline, step):
     name, after, expected = step
     found = _reasons(baseline, after)
-    if expected:
+    if expected is None:
+        assert 'detections' not in found, (name, after, baseline)
+    elif expected:
         assert expected <= found, (name, after, baseline)
     else:
         assert not found, (name, after, baseline)
