@@ -11,7 +11,6 @@ bringups are held to one expectation, so the three can only pass together.
 """
 from __future__ import annotations
 
-import re
 import subprocess
 import time
 from dataclasses import dataclass
@@ -23,14 +22,12 @@ import pytest
 from textbook import paths
 from textbook.myst import fences
 
+from ._launch_log import ENDED, STARTED, Wiring
+
 LESSON = paths.LESSONS / 'ch06/L3/11_one_system_three_formats.md'
 PACKAGE = 'my_robot_pkg'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-STARTED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process started with pid')
-ENDED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly')
-
-Wiring = dict[str, tuple[tuple[str, ...], tuple[str, ...]]]  # topic -> (publishers, subscribers)
 
 
 @dataclass(frozen=True)

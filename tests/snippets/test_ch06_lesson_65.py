@@ -12,7 +12,6 @@ that matches nothing) are held to the graph and values the lesson explains.
 """
 from __future__ import annotations
 
-import re
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -23,14 +22,11 @@ import pytest
 from labkit import checks
 from textbook import paths
 
+from ._launch_log import ENDED, STARTED, Wiring
 from ._shown_snippets import launch_files_included_by
 
 LESSON = paths.LESSONS / 'ch06/L1/05_namespaces_and_remapping.md'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-STARTED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process started with pid')
-ENDED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly')
-
-Wiring = dict[str, tuple[tuple[str, ...], tuple[str, ...]]]  # topic -> (publishers, subscribers)
 
 
 @dataclass(frozen=True)

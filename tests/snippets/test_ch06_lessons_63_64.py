@@ -20,12 +20,12 @@ import pytest
 from labkit import checks
 from textbook import paths
 
+from ._launch_log import STARTED
 from ._shown_snippets import launch_files_included_by
 
 LESSONS = [paths.LESSONS / 'ch06/L1/03_launch_arguments_and_substitutions.md',
            paths.LESSONS / 'ch06/L1/04_packaging_launch_and_config_files.md']
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-STARTED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process started with pid')
 USER_LOG = re.compile(r'^\[INFO\] \[launch\.user\]: (.*)$')
 
 
