@@ -7,6 +7,3 @@ import re
 STARTED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process started with pid')
 #: `[INFO] [talker-1]: process has finished cleanly [..]` -> the process name
 ENDED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly')
-
-#: topic -> (publishers, subscribers)
-Wiring = dict[str, tuple[tuple[str, ...], tuple[str, ...]]]

@@ -12,7 +12,6 @@ bringups are held to one expectation, so the three can only pass together.
 from __future__ import annotations
 
 import subprocess
-import time
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -22,7 +21,8 @@ import pytest
 from textbook import paths
 from textbook.myst import fences
 
-from ._launch_log import ENDED, STARTED, Wiring
+from ._launch_log import ENDED, STARTED
+from ._wiring import Wiring, settled_graph, wiring
 
 LESSON = paths.LESSONS / 'ch06/L3/11_one_system_three_formats.md'
 PACKAGE = 'my_robot_pkg'
@@ -66,8 +66,8 @@ def _robot(ns: str, rate: float, controller: bool, topic: str = 'range',
 def _merge(*robots: tuple[Wiring, dict[str, dict[str, Any]]]) -> dict[str, Any]:
     topics: Wiring = {}
     nodes: dict[str, dict[str, Any]] = {}
-    for wiring, params in robots:
-        topics.update(wiring)
+    for robot_topics, params in robots:
+        topics.update(robot_topics)
         nodes.update(params)
     return {'topics': topics, 'nodes': nodes}
 
@@ -106,21 +106,6 @@ CASES = [
 ]
 
 
-def _wiring(snapshot: labkit.GraphSnapshot) -> Wiring:
-    return {name: (tuple(sorted(topic.publishers)), tuple(sorted(topic.subscribers)))
-            for name, topic in snapshot.topics.items()}
-
-
-def _settled_graph(expected: Wiring) -> labkit.GraphSnapshot:
-    """The graph once it shows `expected`, or as it is when the hang guard runs out."""
-    deadline = time.monotonic() + HANG_GUARD
-    while True:
-        snapshot = labkit.graph()
-        if _wiring(snapshot) == expected or time.monotonic() > deadline:
-            return snapshot
-        time.sleep(0.2)
-
-
 def _typed(params: dict[str, Any], names: list[str]) -> dict[str, tuple[str, Any]]:
     """name -> (type, value): 5 and 5.0 are different answers here."""
     return {name: (type(params.get(name)).__name__, params.get(name)) for name in names}
@@ -138,7 +123,7 @@ def test_launch_starts_its_system(case: Case, ros_env):
         run.wait_for_nodes(list(case.nodes), timeout=HANG_GUARD)
         expected = {name: (tuple(sorted(pubs)), tuple(sorted(subs)))
                     for name, (pubs, subs) in case.topics.items()}
-        snapshot = _settled_graph(expected)
+        snapshot = settled_graph(expected, HANG_GUARD)
         got = {node: _typed(labkit.read_parameters(node), list(wanted))
                for node, wanted in case.nodes.items()}
         still_running = run.running
@@ -149,7 +134,7 @@ def test_launch_starts_its_system(case: Case, ros_env):
     started = [m.group(1) for line in output.splitlines() if (m := STARTED.match(line))]
     assert len(started) == len(case.nodes), output  # no process beyond the expected nodes
     assert sorted(snapshot.nodes) == sorted(case.nodes), output
-    assert _wiring(snapshot) == expected, str(snapshot)
+    assert wiring(snapshot) == expected, str(snapshot)
     assert got == {node: _typed(wanted, list(wanted)) for node, wanted in case.nodes.items()}
     ended = [m.group(1) for line in output.splitlines() if (m := ENDED.match(line))]
     assert exit_code == 0 and sorted(ended) == sorted(started), output

@@ -12,7 +12,6 @@ that matches nothing) are held to the graph and values the lesson explains.
 """
 from __future__ import annotations
 
-import time
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -22,8 +21,9 @@ import pytest
 from labkit import checks
 from textbook import paths
 
-from ._launch_log import ENDED, STARTED, Wiring
+from ._launch_log import ENDED, STARTED
 from ._shown_snippets import launch_files_included_by
+from ._wiring import Wiring, settled_graph, wiring
 
 LESSON = paths.LESSONS / 'ch06/L1/05_namespaces_and_remapping.md'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
@@ -119,22 +119,6 @@ CASES = [
 ]
 
 
-def _wiring(snapshot: labkit.GraphSnapshot) -> Wiring:
-    return {name: (tuple(sorted(topic.publishers)), tuple(sorted(topic.subscribers)))
-            for name, topic in snapshot.topics.items()}
-
-
-def _settled_graph(expected: Wiring) -> labkit.GraphSnapshot:
-    """The graph once it shows `expected` (endpoints are discovered after their nodes),
-    or as it is when the hang guard runs out, for the assertion to show."""
-    deadline = time.monotonic() + HANG_GUARD
-    while True:
-        snapshot = labkit.graph()
-        if _wiring(snapshot) == expected or time.monotonic() > deadline:
-            return snapshot
-        time.sleep(0.2)
-
-
 def _values(params: dict[str, Any], names: list[str]) -> dict[str, Any]:
     return {name: params.get(name) for name in names}
 
@@ -145,7 +129,7 @@ def test_launch_makes_its_graph(case: Case, ros_env):
         run.wait_for_nodes(list(case.nodes), timeout=HANG_GUARD)
         expected = {name: (tuple(sorted(pubs)), tuple(sorted(subs)))
                     for name, (pubs, subs) in case.topics.items()}
-        snapshot = _settled_graph(expected)
+        snapshot = settled_graph(expected, HANG_GUARD)
         got = {node: _values(labkit.read_parameters(node), list(wanted))
                for node, wanted in case.nodes.items()}
         still_running = run.running
@@ -156,7 +140,7 @@ def test_launch_makes_its_graph(case: Case, ros_env):
     started = sorted(m.group(1) for line in output.splitlines() if (m := STARTED.match(line)))
     assert started == sorted(case.executables), output
     assert sorted(snapshot.nodes) == sorted(case.nodes), output
-    assert _wiring(snapshot) == expected, str(snapshot)
+    assert wiring(snapshot) == expected, str(snapshot)
     assert got == case.nodes, output
     ended = sorted(m.group(1) for line in output.splitlines() if (m := ENDED.match(line)))
     assert exit_code == 0 and ended == started, output
