@@ -2,11 +2,14 @@
 and on each catalogued wrong answer (naming the mistake), and passes on the
 book's solution.
 
-One colcon workspace holds one copy of the student's package per case
-(`ex_starter`, `ex_solution`, `ex_wrong_<n>`), built by a single
-`colcon build`; each check then launches its case as a student's terminal
-would.  New exercises and wrong answers are picked up from labkit.checks
-and `snippets/<solutions>/wrong/` without touching this file.
+The book packages the exercises use are built once per test process into an
+underlay; each exercise then gets its own overlay workspace, built on first
+use, holding one copy of the student's package per case (`ex_starter`,
+`ex_solution`, `ex_wrong_<n>`).  A student's overlay on a sourced workspace
+works the same way, and `-k ex611` builds only what exercise 6.11 needs.
+Each check launches its case as a student's terminal would.  New exercises
+and wrong answers are picked up from labkit.checks and
+`snippets/<solutions>/wrong/` without touching this file.
 """
 from __future__ import annotations
 
@@ -14,6 +17,7 @@ import os
 import re
 import shutil
 import subprocess
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -69,29 +73,51 @@ def lesson_environment():
         yield
 
 
+def _colcon_build(workspace: Path, env: dict[str, str] | None = None) -> None:
+    result = subprocess.run([paths.executable('colcon'), 'build'], cwd=workspace, env=env,
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stdout + result.stderr
+
+
 @pytest.fixture(scope='module')
-def case_workspace(tmp_path_factory, lesson_environment) -> Path:
-    """All cases (and the book packages they use), built in one colcon build."""
-    workspace = tmp_path_factory.mktemp('exercise_cases')
+def book_underlay(tmp_path_factory, lesson_environment) -> StudentPackage:
+    """The book packages, built once: the underlay every exercise workspace sources."""
+    workspace = tmp_path_factory.mktemp('exercise_book_packages')
     for package in BOOK_PACKAGES:
         shutil.copytree(paths.SNIPPETS / package, workspace / 'src' / package,
                         ignore=shutil.ignore_patterns('__pycache__'))
-    ids = list(checks.EXERCISES)
-    exercises.setup(*ids, workspace=workspace, package='ex_starter')
-    exercises.setup(*ids, workspace=workspace, package='ex_solution')
-    for exercise_id in ids:
-        exercises.use_solution(exercise_id, force=True, workspace=workspace,
-                               package='ex_solution')
+    _colcon_build(workspace)
+    return StudentPackage(workspace)
+
+
+@pytest.fixture(scope='module')
+def exercise_workspaces(tmp_path_factory, book_underlay: StudentPackage
+                        ) -> Callable[[str], Path]:
+    """exercise id -> its overlay workspace with every case of it, built on first use."""
+    built: dict[str, Path] = {}
+
+    def workspace_of(exercise_id: str) -> Path:
+        if exercise_id not in built:
+            built[exercise_id] = _build_cases(
+                tmp_path_factory.mktemp(f'exercise_{exercise_id}'), exercise_id,
+                book_underlay.environment())
+        return built[exercise_id]
+
+    return workspace_of
+
+
+def _build_cases(workspace: Path, exercise_id: str, underlay: dict[str, str]) -> Path:
+    exercises.setup(exercise_id, workspace=workspace, package='ex_starter')
+    exercises.setup(exercise_id, workspace=workspace, package='ex_solution')
+    exercises.use_solution(exercise_id, force=True, workspace=workspace, package='ex_solution')
     for case in CASES:
-        if case.kind == 'wrong':
-            exercises.setup(*ids, workspace=workspace, package=case.package)
-            answer = checks.find(case.exercise).wrong_answers()[case.name]
+        if case.kind == 'wrong' and case.exercise == exercise_id:
+            exercises.setup(exercise_id, workspace=workspace, package=case.package)
+            answer = checks.find(exercise_id).wrong_answers()[case.name]
             for relative, source in answer.items():  # named for its package, like the rest
                 exercises.copy_for_package(source, workspace / 'src' / case.package / relative,
                                            case.package)
-    result = subprocess.run([paths.executable('colcon'), 'build'], cwd=workspace,
-                            capture_output=True, text=True, timeout=600)
-    assert result.returncode == 0, result.stdout + result.stderr
+    _colcon_build(workspace, underlay)
     return workspace
 
 
@@ -108,8 +134,9 @@ def test_every_exercise_has_wrong_answers_that_say_what_the_check_reports():
 @pytest.mark.timeout(900)
 @pytest.mark.parametrize('case', CASES, ids=str)
 def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
-        case: Case, case_workspace: Path, lesson_environment):
-    verdict = checks.find(case.exercise).grade(StudentPackage(case_workspace, case.package))
+        case: Case, exercise_workspaces: Callable[[str], Path], lesson_environment):
+    workspace = exercise_workspaces(case.exercise)
+    verdict = checks.find(case.exercise).grade(StudentPackage(workspace, case.package))
     report = str(verdict)
     print(report)  # in the test log: what a student would read
     if case.kind == 'solution':
@@ -121,13 +148,14 @@ def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
 
 
 def test_a_file_changed_after_the_build_is_reported_before_anything_runs(
-        case_workspace: Path, lesson_environment):
+        exercise_workspaces: Callable[[str], Path], lesson_environment):
     exercise = checks.find('ex61_full_pipeline')
-    source = case_workspace / 'src' / 'ex_starter' / exercise.files[0]
+    workspace = exercise_workspaces(exercise.id)
+    source = workspace / 'src' / 'ex_starter' / exercise.files[0]
     original = source.read_bytes()
     source.write_bytes(original + b'# an edit not built yet\n')
     try:
-        verdict = exercise.grade(StudentPackage(case_workspace, 'ex_starter'))
+        verdict = exercise.grade(StudentPackage(workspace, 'ex_starter'))
     finally:
         source.write_bytes(original)
     assert verdict.problems == [
