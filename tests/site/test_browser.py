@@ -177,3 +177,18 @@ def test_search_finds_launch_configuration(browser, server):
         pytest.fail('the site search found nothing for LaunchConfiguration')
     results = browser.find_element(By.CSS_SELECTOR, '.md-search-result').text
     assert 'LaunchConfiguration' in results
+
+
+def test_files_side_by_side_are_tabs_that_switch(browser, server):
+    """6.11's Python/XML/YAML groups are tabs: one file shows, a label switches it."""
+    page = next(p for p in LESSON_PAGES if '/11_' in p)
+    open_page(browser, server + page)
+    tab_set = browser.find_element(By.CSS_SELECTOR, 'div.tabbed-set')
+    labels = tab_set.find_elements(By.CSS_SELECTOR, '.tabbed-labels > label')
+    blocks = tab_set.find_elements(By.CSS_SELECTOR, '.tabbed-content > .tabbed-block')
+    assert [label.text for label in labels] == ['Python', 'XML', 'YAML']
+    assert [block.is_displayed() for block in blocks] == [True, False, False]
+    labels[1].click()
+    WebDriverWait(browser, WAIT).until(lambda b: blocks[1].is_displayed())
+    assert [block.is_displayed() for block in blocks] == [False, True, False]
+    assert 'bringup_formats.launch.xml' in blocks[1].text

@@ -15,6 +15,7 @@ import nbformat
 
 from . import inline_check, keypoints, metadata, paths
 from .includes import Snippet, expand
+from .tabs import check_markdown
 
 
 @dataclass
@@ -68,6 +69,9 @@ def load(path: Path) -> Lesson:
     notebook.metadata.pop('jupytext', None)
     for index, cell in enumerate(notebook.cells):  # the same lesson, the same notebook
         cell.id = f'cell-{index}'
+        if cell.cell_type == 'markdown':
+            first_line = cell.source.strip().splitlines()[0] if cell.source.strip() else ''
+            check_markdown(cell.source, f'{source}: the markdown cell that begins {first_line!r}')
     return Lesson(path, text, meta, notebook, used)
 
 

@@ -7,7 +7,7 @@
   notebooks to the site, with a generated page per chapter and per layer;
   mkdocs-jupyter renders the notebooks;
 - on_page_content: snippet title bars, folded solutions, header box, Key
-  points box and glossary links (render.py), a TOC that keeps the code of
+  points box, glossary links and tabs (render.py), a TOC that keeps the code of
   headings (page_toc.py); an image without a description fails the build;
 - on_page_context: "edit this page" of a lesson opens its .md source.
 
@@ -34,6 +34,7 @@ from textbook.lessons import Lesson, load_all
 from textbook.nav import build_nav, part_pages
 from textbook.page_toc import toc_tokens
 from textbook.render import LessonPage, finish_lesson_html, images_without_description
+from textbook.tabs import TabsError
 from textbook.workspace import WorkspaceBuildError, ensure_built
 
 log = logging.getLogger('mkdocs.hooks.textbook')
@@ -95,9 +96,12 @@ def on_page_content(html: str, page, config, files) -> str:
     by_id = {other.id: other for other in _lessons}
     prerequisites = [(by_id[prereq].title, _url_from(page, files, by_id[prereq].site_path))
                      for prereq in lesson.meta['prerequisites']]
-    finished = finish_lesson_html(html, LessonPage(
-        header=header_html(lesson.meta, prerequisites), glossary=_glossary,
-        glossary_url=_url_from(page, files, GLOSSARY_PAGE)))
+    try:
+        finished = finish_lesson_html(html, LessonPage(
+            header=header_html(lesson.meta, prerequisites), glossary=_glossary,
+            glossary_url=_url_from(page, files, GLOSSARY_PAGE)))
+    except TabsError as error:
+        raise PluginError(f'{lesson.source}: {error}') from None
     soup = BeautifulSoup(finished, 'html.parser')
     missing = images_without_description(soup)
     if missing:

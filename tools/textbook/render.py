@@ -6,7 +6,8 @@
   ``<details>`` block, so readers try first and look second;
 - the lesson's header box goes under its title, its final Key points
   section becomes a box, and the first prose use of each glossary term
-  links to the glossary (:class:`LessonPage` says what to add).
+  links to the glossary (:class:`LessonPage` says what to add);
+- files marked as a tab group become tabs (tabs.py).
 """
 from __future__ import annotations
 
@@ -17,6 +18,7 @@ from bs4 import BeautifulSoup
 
 from .glossary import Entry, link_first_uses
 from .keypoints import HEADING as KEY_POINTS
+from .tabs import group_tabs
 
 _TITLE = re.compile(
     r'<div class="snippet-title">(?P<title>[^<]*)</div>\s*<div class="highlight">')
@@ -115,15 +117,15 @@ def box_key_points(soup: BeautifulSoup) -> bool:
 
 
 def finish_lesson_html(html: str, page: LessonPage | None = None) -> str:
-    """The lesson HTML with title bars, folds and, given ``page``, header, Key
-    points box and glossary links."""
-    html = fold_tagged_cells(title_snippets(html))
-    if page is None:
-        return html
-    soup = BeautifulSoup(html, 'html.parser')
-    link_first_uses(soup, page.glossary, page.glossary_url)  # prose only, not the header
-    add_header(soup, page.header)
-    box_key_points(soup)
+    """The lesson HTML with title bars, folds and tabs and, given ``page``,
+    header, Key points box and glossary links.  Raises TabsError for a
+    malformed tab group."""
+    soup = BeautifulSoup(fold_tagged_cells(title_snippets(html)), 'html.parser')
+    group_tabs(soup)
+    if page is not None:
+        link_first_uses(soup, page.glossary, page.glossary_url)  # prose only, not the header
+        add_header(soup, page.header)
+        box_key_points(soup)
     return str(soup)
 
 
