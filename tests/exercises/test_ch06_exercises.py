@@ -61,7 +61,7 @@ def _expected_phrases(case: Case) -> list[str]:
 #: Book packages the exercises' nodes come from, built next to the cases so
 #: the test does not depend on the rest of snippets/.
 BOOK_PACKAGES = ('my_robot_pkg', 'comms_demo_pkg', 'tuning_demo_pkg', 'robot_bringup',
-                 'dock_watch_pkg')
+                 'dock_watch_pkg', 'rover_config')
 
 
 @pytest.fixture(scope='module')
