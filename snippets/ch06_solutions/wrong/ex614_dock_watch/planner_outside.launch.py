@@ -1,0 +1,39 @@
+# Mistake: the planner is left outside the group, so it runs as /dock_planner and
+#   listens on /battery_low, which nothing publishes any more.
+# Verdict names: node /scout/dock_planner
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.parameter_descriptions import ParameterValue
+
+
+def generate_launch_description():
+    arguments = [
+        DeclareLaunchArgument('battery_rate', default_value='5.0',
+                              description='Battery states per second (Hz)'),
+        DeclareLaunchArgument('dock_x', default_value='0.0', description='Dock x in map (m)'),
+        DeclareLaunchArgument('dock_y', default_value='0.0', description='Dock y in map (m)'),
+        DeclareLaunchArgument('low_threshold', default_value='0.25',
+                              description='Charge (0.05 to 0.95) at or below which the '
+                                          'battery is low'),
+        DeclareLaunchArgument('robot', default_value='scout',  # R9
+                              description='Name of the robot: the namespace of every node'),
+    ]
+
+    def number(argument: str) -> ParameterValue:
+        """A launch argument as a double, so `battery_rate:=5` is 5.0, not the integer 5."""
+        return ParameterValue(LaunchConfiguration(argument), value_type=float)
+
+    planner = Node(package='dock_watch_pkg', executable='dock_planner', name='dock_planner',
+                   parameters=[{'dock_x': number('dock_x'), 'dock_y': number('dock_y'),
+                                'frame_id': 'map'}])
+    nodes = [
+        Node(package='dock_watch_pkg', executable='battery_sim', name='battery_sim',
+             parameters=[{'publish_rate': number('battery_rate')}]),
+        Node(package='dock_watch_pkg', executable='battery_monitor', name='battery_monitor',
+             parameters=[{'low_threshold': number('low_threshold')}]),
+    ]
+    # R9: one namespace for the whole group, so a node added later cannot miss it
+    robot = GroupAction([PushRosNamespace(LaunchConfiguration('robot')), *nodes])
+    return LaunchDescription(arguments + [robot, planner])
