@@ -1,7 +1,10 @@
 """Every lesson executes through nbclient, as the site build executes it
 (one test per lesson).  A lesson whose cache key is unchanged (its text, the
 snippets it uses, the tools and the ROS stack) is taken from the cache, as
-the site build takes it; ``TEXTBOOK_FRESH=1`` executes every lesson anyway."""
+the site build takes it; ``TEXTBOOK_FRESH=1`` executes every lesson anyway.
+Lessons run on any test worker, next to other tests: a lesson spends much of
+its time waiting for ROS discovery, and the cache's per-lesson lock keeps a
+lesson from being executed twice when the site build wants it too."""
 from __future__ import annotations
 
 import pytest
@@ -16,7 +19,6 @@ def test_there_are_lessons():
 
 
 @pytest.mark.timeout(900)
-@pytest.mark.xdist_group('lessons')  # before tests/site, in the same worker
 @pytest.mark.parametrize('path', LESSONS, ids=lambda p: str(p.relative_to(p.parents[2])))
 def test_lesson_executes(path):
     lesson = load(path)

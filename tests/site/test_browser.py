@@ -27,7 +27,7 @@ from selenium.webdriver.support.ui import WebDriverWait
 from textbook.lessons import load_all
 from textbook.render import NO_DESCRIPTION
 
-pytestmark = [pytest.mark.xdist_group('lessons'), pytest.mark.timeout(1800)]
+pytestmark = [pytest.mark.xdist_group('site'), pytest.mark.timeout(1800)]
 
 CHROMIUM = Path('/usr/bin/chromium')
 CHROMEDRIVER = Path('/usr/bin/chromedriver')

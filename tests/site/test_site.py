@@ -7,8 +7,9 @@ import nbformat
 import pytest
 from bs4 import BeautifulSoup
 
-# After tests/lessons in the same worker: the build then reuses their results.
-pytestmark = pytest.mark.xdist_group('lessons')
+# One worker builds the site once for all site tests; lessons the lesson tests
+# executed come from the cache, the others the build executes itself.
+pytestmark = pytest.mark.xdist_group('site')
 
 
 def page_text(site, page: str) -> str:

@@ -3,6 +3,7 @@ with bad values named."""
 from __future__ import annotations
 
 import pytest
+from textbook import __main__ as textbook_cli
 from textbook import settings
 
 
@@ -13,8 +14,10 @@ def write(tmp_path, table: str):
 
 
 def test_pyproject_values_are_read(tmp_path):
-    loaded = settings.load(write(tmp_path, 'cell_timeout = 60\njobs = 1\nfresh = true'), {})
-    assert (loaded.cell_timeout, loaded.jobs, loaded.fresh) == (60, 1, True)
+    loaded = settings.load(write(tmp_path, 'cell_timeout = 60\njobs = 1\nfresh = true\n'
+                                           'test_workers = 4'), {})
+    assert (loaded.cell_timeout, loaded.jobs, loaded.fresh, loaded.test_workers) == \
+        (60, 1, True, 4)
 
 
 def test_missing_values_take_the_defaults(tmp_path):
@@ -46,3 +49,23 @@ def test_an_unknown_setting_is_refused(tmp_path):
 
 def test_the_repository_settings_load():
     assert settings.load().cell_timeout >= 1
+
+
+
+@pytest.mark.parametrize('argv, environ, workers, passed_on', [
+    (['test'], {}, None, []),
+    (['test'], {'TEXTBOOK_TEST_WORKERS': '3'}, '3', []),
+    (['test', '-n', '1', '-k', 'tabs'], {'TEXTBOOK_TEST_WORKERS': '3'}, '1', ['-k', 'tabs'])])
+def test_make_test_runs_pytest_with_the_configured_workers(monkeypatch, argv, environ, workers,
+                                                           passed_on):
+    monkeypatch.delenv('TEXTBOOK_TEST_WORKERS', raising=False)
+    for name, value in environ.items():
+        monkeypatch.setenv(name, value)
+    calls = []
+    monkeypatch.setattr(textbook_cli, '_exec', lambda *args: calls.append(args) or 0)
+    assert textbook_cli.main(argv) == 0
+    (args,) = calls
+    assert args[0] == 'pytest'
+    assert args[args.index('-n') + 1] == (workers or str(settings.load().test_workers))
+    assert args[args.index('--dist') + 1] == 'loadgroup' and '--durations=25' in args
+    assert list(args[args.index('--durations=25') + 1:]) == passed_on

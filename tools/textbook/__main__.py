@@ -2,7 +2,7 @@
 
 - build: check and execute the lessons, build the site into site/ (strict);
 - serve: the same, served on http://127.0.0.1:8000, rebuilt on changes;
-- test:  the whole test suite (pytest, two workers), pytest's exit code;
+- test:  the whole test suite (pytest on test_workers workers), pytest's exit code;
 - check: only the lesson checks (metadata, includes, inline code), no kernel;
 - lab:   JupyterLab on lessons/ with the book's kernel (textbook.lab).
 """
@@ -12,7 +12,7 @@ import argparse
 import os
 import sys
 
-from . import paths, workspace
+from . import paths, settings, workspace
 from .lab import lab_arguments, write_settings
 
 
@@ -42,10 +42,12 @@ def serve(options: argparse.Namespace) -> int:
 
 
 def test(options: argparse.Namespace) -> int:
-    # loadgroup: tests marked xdist_group("lessons") run in one worker, in order,
-    # so the site build finds the lessons the lesson tests just executed.
-    return _exec('pytest', '-p', 'textbook.pytest_plugin', '-n', str(options.workers),
-                 '--dist', 'loadgroup', *options.pytest_args)
+    # loadgroup: the site tests (xdist_group "site") share one worker and one site
+    # build; everything else, lessons included, spreads over all workers.
+    # --durations: every run (CI's too) names its slowest tests.
+    workers = options.workers or str(settings.load().test_workers)
+    return _exec('pytest', '-p', 'textbook.pytest_plugin', '-n', workers,
+                 '--dist', 'loadgroup', '--durations=25', *options.pytest_args)
 
 
 def check(_: argparse.Namespace) -> int:
@@ -79,7 +81,8 @@ def main(argv: list[str] | None = None) -> int:
     serving.add_argument('--address', default='127.0.0.1:8000')
     serving.set_defaults(run=serve)
     testing = commands.add_parser('test', help='run the test suite')
-    testing.add_argument('--workers', '-n', default='2', help='pytest-xdist workers (default 2)')
+    testing.add_argument('--workers', '-n', default=None,
+                         help='pytest-xdist workers (default: test_workers in pyproject.toml)')
     testing.set_defaults(run=test)
     commands.add_parser('check', help='check lessons without executing them').set_defaults(
         run=check)

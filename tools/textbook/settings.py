@@ -17,6 +17,7 @@ class Settings:
     cell_timeout: int = 180  # seconds; a cell that runs longer is reported as hung
     jobs: int = 2            # lessons executed at the same time by the site build
     fresh: bool = False      # tests execute every lesson even when its result is cached
+    test_workers: int = 2    # pytest-xdist workers of `python -m textbook test`
 
 
 def _value(name: str, raw: object, default: object) -> object:
