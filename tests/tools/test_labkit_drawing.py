@@ -71,6 +71,31 @@ def long_pipeline() -> GraphSnapshot:
                             tuple(stages[i + 1:i + 2])) for i, stage in enumerate(stages)))
 
 
+def pure_cycle() -> GraphSnapshot:
+    """Three nodes in a ring and nothing else: no source where the flow starts."""
+    ring = ('/ping', '/pong', '/relay')
+    return snapshot(*(topic(f'{a}_out', 'std_msgs/msg/Int32', (a,), (b,))
+                      for a, b in zip(ring, ring[1:] + ring[:1], strict=True)))
+
+
+def reads_its_own_topic() -> GraphSnapshot:
+    """A node that subscribes to what it publishes (a loop through one topic),
+    next to a sensor feeding it."""
+    return snapshot(
+        topic('/heartbeat', 'std_msgs/msg/Header', ('/supervisor',), ('/supervisor',)),
+        topic('/range', 'sensor_msgs/msg/Range', ('/sensor',), ('/supervisor',)),
+        topic('/status', 'std_msgs/msg/String', ('/supervisor',), ('/supervisor', '/logger')))
+
+
+def long_loop() -> GraphSnapshot:
+    """The long pipeline with its last stage feeding the first: wrapped into
+    bands, the way back runs from the last band up to the first."""
+    pipeline = long_pipeline()
+    back = topic('/feedback', 'std_msgs/msg/Float64', ('/stage_11_filter',),
+                 ('/stage_00_filter',))
+    return snapshot(*pipeline.topics.values(), back)
+
+
 def robot_stack() -> GraphSnapshot:
     """Twelve nodes, fifteen topics: loops (one through a single topic), a topic
     nobody publishes, namespaces and a node with no topics at all."""
@@ -128,6 +153,9 @@ CASES = {
     'fan-out/fan-in with types': (fan_out_fan_in, True),
     'feedback loop': (feedback_loop, True),
     'long pipeline': (long_pipeline, True),
+    'pure cycle': (pure_cycle, False),
+    'node reading its own topic': (reads_its_own_topic, True),
+    'long loop': (long_loop, True),
     'robot stack': (robot_stack, True),
     'one node': (lambda: GraphSnapshot(('/lonely_node',), {}), False),
     **{f'random system {seed}': (lambda seed=seed: random_system(seed), seed % 2 == 0)

@@ -23,12 +23,11 @@ from labkit.graph_drawing import (
     layout_plan,
     render,
     to_networkx,
-    without_cycles,
 )
 
 __all__ = ['DISPLAY_PX_PER_INCH', 'FONT_SIZES', 'MAX_WIDTH', 'PNG_DPI', 'GraphFigure',
            'default_caption', 'describe', 'draw_graph', 'layers', 'layout', 'layout_plan',
-           'to_networkx', 'without_cycles']
+           'to_networkx']
 
 
 def draw_graph(snapshot: Any = None, *, show_types: bool = False, title: str | None = None,

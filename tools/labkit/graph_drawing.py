@@ -1,13 +1,14 @@
 """Draw a :class:`GraphSnapshot` the way rqt_graph does: nodes as ellipses,
 topics as boxes, arrows from publisher to topic to subscriber.
 
-Every label is measured with the figure's own renderer first, and the
-layout (:mod:`labkit.graph_layout`) sizes its columns from those
-measurements, so shapes never overlap and arrows never cross a label.  The
-figure stays within notebook width (:data:`MAX_WIDTH`): a wide graph first
-gets a smaller font, then wraps into bands and grows downwards.  The layout
-is deterministic, so an executed lesson shows the same picture on every
-build.
+Every label is measured with the figure's own renderer first, and Graphviz's
+dot (:mod:`labkit.graph_dot`) lays the shapes out at those sizes, so shapes
+never overlap and arrows never cross a label.  The figure stays within
+notebook width (:data:`MAX_WIDTH`): a wide graph first gets a smaller font,
+then wraps into bands and grows downwards (:mod:`labkit.graph_bands`; top to
+bottom instead when wrapping would send many edges around the margins).
+The layout is deterministic, so an executed lesson shows the same picture on
+every build.
 
 In a notebook the figure shows itself as a captioned picture
 (:class:`GraphFigure`): an HTML ``<figure>`` whose ``<img>`` has an alt text
@@ -34,11 +35,12 @@ from matplotlib.path import Path
 from matplotlib.text import Text
 from matplotlib.transforms import Affine2D
 
-from labkit.graph_layout import Placement, Spacing, place, without_cycles
+from labkit.graph_bands import Placement, Spacing, place
+from labkit.graph_dot import Gaps
 from labkit.graph_paths import FollowPath
 
 __all__ = ['DISPLAY_PX_PER_INCH', 'MAX_WIDTH', 'GraphFigure', 'describe', 'layers', 'layout',
-           'render', 'to_networkx', 'without_cycles']
+           'render', 'to_networkx']
 
 #: Widest figure, in inches: what a notebook shows without scaling it down.
 MAX_WIDTH = 9.5
@@ -120,7 +122,7 @@ TOPIC_STYLE = dict(boxstyle='square,pad=0.5', facecolor='#fdf1dc', edgecolor='#b
                    linewidth=1.2)
 ARROW_COLOR = '#4a5568'
 ARROW_SCALE = 11.0  # points; the head of '-|>' is 0.4 of it long and 0.2 of it wide
-HEAD_HALF_WIDTH = 0.2 * ARROW_SCALE / 72 + 0.01  # inches, with a little air
+SPACING = Spacing(gaps=Gaps(arrow_head=0.4 * ARROW_SCALE / 72))
 TEXT_COLOR = '#1a202c'
 
 
@@ -139,9 +141,12 @@ def layers(graph: nx.DiGraph) -> list[list[str]]:
     """Vertices in columns, each right of everything that feeds it, top to bottom.
 
     A feedback loop is laid out along the data flow and only its way back
-    points left.  Within a column the order keeps arrows from crossing.
+    points left.
     """
-    return layout_plan(graph).columns
+    columns: dict[float, list[tuple[float, str]]] = {}
+    for vertex, (x, y) in layout(graph).items():
+        columns.setdefault(round(x, 3), []).append((-y, vertex))
+    return [[vertex for _, vertex in sorted(columns[x])] for x in sorted(columns)]
 
 
 def layout(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
@@ -153,14 +158,13 @@ def layout(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = Non
 
 def layout_plan(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
                 max_width: float | None = None) -> Placement:
-    """The full :class:`~labkit.graph_layout.Placement` (centres and arrow paths)."""
+    """The full :class:`~labkit.graph_bands.Placement` (centres and arrow paths),
+    wrapped into bands to fit `max_width`."""
     if sizes is None:
         sizes = {vertex: (1.2, 0.35) for vertex in graph}
-    # arrows meet a topic's box on its sides, clear of the corners, where an
-    # arrowhead arriving at a slant would cut into the box
-    reach = {vertex: sizes[vertex][1] / 2 - HEAD_HALF_WIDTH for vertex in graph
-             if graph.nodes[vertex].get('kind') == 'topic'}
-    return place(graph, sizes, Spacing(), max_width, reach)
+    shapes = {vertex: 'ellipse' if graph.nodes[vertex].get('kind') == 'node' else 'box'
+              for vertex in graph}
+    return place(graph, sizes, shapes, max_width, SPACING)
 
 
 def _label(vertex: str, graph: nx.DiGraph, show_types: bool) -> str:
@@ -183,11 +187,12 @@ def _measure(labels: dict[str, Text], figure: Figure, fontsize: float,
 
 
 def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure) -> Placement:
-    """The layout at the font size that needs the fewest bands (the larger on a
-    tie); leaves the labels at that size."""
+    """The layout at the font size that fits with the fewest bands, left to
+    right if it can (the larger size on a tie); leaves the labels at that size."""
     plans = [(layout_plan(graph, _measure(labels, figure, size), MAX_WIDTH), size)
              for size in FONT_SIZES]
-    plan, fontsize = min(plans, key=lambda entry: (entry[0].bands, -entry[1]))
+    plan, fontsize = min(plans, key=lambda entry: (
+        entry[0].width > MAX_WIDTH, entry[0].bands, entry[0].direction != 'LR', -entry[1]))
     _measure(labels, figure, fontsize)
     return plan
 
@@ -263,8 +268,6 @@ def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None
     for vertex, label in labels.items():
         label.set_position(plan.centres[vertex])
     for source, target in sorted(graph.edges):
-        if (source, target) not in plan.routes:
-            continue  # a self-loop: a node and a topic with the same name
         # Arrows are drawn after the labels (higher zorder): each label has
         # placed its shape by then, and the arrow is cut at that shape.
         axes.annotate('', xy=plan.centres[target], xytext=plan.centres[source], zorder=4,

@@ -1,9 +1,8 @@
 """Arrow paths for the graph drawing.
 
-:class:`Pen` builds them from straight runs, S-curves and rounded corners,
-reversibly (a back edge is laid out along the data flow and drawn the other
-way); :class:`FollowPath` makes a matplotlib arrow follow one and end at the
-outlines of the shapes it joins.
+:func:`rounded` and :func:`joined` build the way of an edge that wraps from
+one band of a picture to another; :class:`FollowPath` makes a matplotlib
+arrow follow a path and end at the outlines of the shapes it joins.
 """
 from __future__ import annotations
 
@@ -18,61 +17,35 @@ from matplotlib.transforms import Transform
 Point = tuple[float, float]
 
 
-class Pen:
-    """Builds a path from lines and Bézier curves, starting at `start`."""
-
-    def __init__(self, start: Point):
-        self.start = start
-        self.segments: list[tuple[list[Point], Point]] = []  # (control points, end)
-
-    @property
-    def here(self) -> Point:
-        return self.segments[-1][1] if self.segments else self.start
-
-    def line(self, end: Point) -> None:
-        self.segments.append(([], end))
-
-    def s_curve(self, end: Point, leave: float = 0.0, arrive: float = 0.0) -> None:
-        """A smooth S across a column gap, leaving and arriving with the given
-        slopes (dy/dx), so it continues the straight runs on either side."""
-        (x0, y0), (x1, y1) = self.here, end
-        half = (x1 - x0) / 2
-        self.segments.append(([(x0 + half, y0 + leave * half), (x1 - half, y1 - arrive * half)],
-                              end))
-
-    def rounded(self, corners: list[Point], end: Point, radius: float) -> None:
-        """Straight runs through `corners` to `end`, rounding each corner."""
-        points = [self.here, *corners, end]
-        for previous, corner, following in zip(points, points[1:], points[2:], strict=False):
-            r = min(radius, distance(previous, corner) / 2, distance(corner, following) / 2)
-            self.line(towards(corner, previous, r))
-            self.segments.append(([corner], towards(corner, following, r)))
-        self.line(end)
-
-    def path(self, reverse: bool = False) -> Path:
-        """The path drawn so far (end to start if `reverse`)."""
-        segments = self.segments
-        start = self.start
-        if reverse and segments:
-            starts = [start] + [end for _, end in segments[:-1]]
-            start = segments[-1][1]
-            segments = [(controls[::-1], begin) for (controls, _), begin
-                        in zip(segments[::-1], starts[::-1], strict=True)]
-        vertices, codes = [start], [Path.MOVETO]
-        kinds = {0: Path.LINETO, 1: Path.CURVE3, 2: Path.CURVE4}
-        for controls, end in segments:
-            vertices += [*controls, end]
-            codes += [kinds[len(controls)]] * (len(controls) + 1)
-        return Path(vertices, codes)
+def rounded(points: list[Point], radius: float) -> Path:
+    """Straight runs through `points`, each corner rounded with `radius` (at
+    most half of the shorter run beside it)."""
+    vertices, codes = [points[0]], [Path.MOVETO]
+    for previous, corner, following in zip(points, points[1:], points[2:], strict=False):
+        r = min(radius, _distance(previous, corner) / 2, _distance(corner, following) / 2)
+        vertices += [_towards(corner, previous, r), corner, _towards(corner, following, r)]
+        codes += [Path.LINETO, Path.CURVE3, Path.CURVE3]
+    vertices.append(points[-1])
+    codes.append(Path.LINETO)
+    return Path(vertices, codes)
 
 
-def distance(a: Point, b: Point) -> float:
+def joined(paths: list[Path]) -> Path:
+    """One continuous path through `paths` in turn (each starting where the
+    one before ends), as an arrow needs."""
+    vertices = [vertex for path in paths for vertex in path.vertices]
+    codes = [code for path in paths for code in path.codes]
+    codes = [Path.MOVETO] + [Path.LINETO if code == Path.MOVETO else code for code in codes[1:]]
+    return Path(vertices, codes)
+
+
+def _distance(a: Point, b: Point) -> float:
     return ((a[0] - b[0]) ** 2 + (a[1] - b[1]) ** 2) ** 0.5
 
 
-def towards(start: Point, goal: Point, length: float) -> Point:
+def _towards(start: Point, goal: Point, length: float) -> Point:
     """The point `length` from `start` on the way to `goal`."""
-    gap = distance(start, goal)
+    gap = _distance(start, goal)
     if gap == 0:
         return start
     return (start[0] + (goal[0] - start[0]) * length / gap,
