@@ -1,0 +1,25 @@
+# Mistake: sensor_rate not passed down: each sensor silently keeps the default 2.0.
+# Verdict names: publish_rate 2.0
+from launch import LaunchContext, LaunchDescription
+from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
+from launch.actions import OpaqueFunction
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+def scouts(context: LaunchContext) -> list[GroupAction]:
+    count = int(LaunchConfiguration('robot_count').perform(context))
+    robot = PathJoinSubstitution([FindPackageShare('robot_bringup'), 'launch',
+                                  'robot.launch.py'])
+    return [GroupAction([IncludeLaunchDescription(
+                PythonLaunchDescriptionSource(robot),
+                launch_arguments={'robot_name': f'scout{number}'}.items())])
+            for number in range(1, count + 1)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_count', default_value='2'),
+        OpaqueFunction(function=scouts),
+    ])
