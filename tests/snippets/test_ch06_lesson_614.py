@@ -13,18 +13,25 @@ from __future__ import annotations
 
 import subprocess
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
+from pathlib import Path
 
 import labkit
 import pytest
 import speccheck
 from textbook import paths
 
+from ._shown_snippets import launch_files_included_by
 from ._wiring import Wiring, settled_graph, wiring
 
+LESSON = paths.LESSONS / 'ch06/L4/14_specification_to_system.md'
 PACKAGE = 'dock_watch_pkg'
+SOLUTION = paths.SNIPPETS / 'ch06_solutions' / 'launch' / 'ex614_dock_watch.launch.py'
 SPECS = paths.SNIPPETS / PACKAGE / 'specs'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-FIRST_REPORT = r'\[dock_planner\]: First report: battery ok'
+#: the planner's first /battery_low message; its logger is `dock_planner` or `<ns>.dock_planner`
+FIRST_REPORT = r'dock_planner\]: First report: battery ok'
 
 
 def _spec(name: str) -> speccheck.Spec:
@@ -96,12 +103,16 @@ LIVE = {
 }
 
 
-def _running(launch_file: str, arguments: dict[str, str], nodes: list[str], env):
-    run = labkit.launch(PACKAGE, launch_file, launch_arguments=arguments, env=env,
-                        cwd=paths.WORKSPACE)
-    run.wait_for_nodes(nodes, timeout=HANG_GUARD)
-    run.wait_for_output(FIRST_REPORT, timeout=HANG_GUARD)
-    return run
+@contextmanager
+def _running(launch_file: str, arguments: dict[str, str], nodes: list[str], env,
+             package: str = PACKAGE) -> Iterator[labkit.Background]:
+    """The launch, once the chain battery_sim -> monitor -> planner is connected;
+    stopped on the way out, also when the wait fails."""
+    with labkit.launch(*([package, launch_file] if package else [launch_file]),
+                       launch_arguments=arguments, env=env, cwd=paths.WORKSPACE) as run:
+        run.wait_for_nodes(nodes, timeout=HANG_GUARD)
+        run.wait_for_output(FIRST_REPORT, timeout=HANG_GUARD)
+        yield run
 
 
 @pytest.mark.parametrize('case', list(LIVE), ids=lambda case: case[0])
@@ -158,3 +169,30 @@ def test_a_value_outside_the_declared_range_stops_the_node(node: str, parameter:
     assert done.returncode != 0, output
     assert f'Parameter {parameter} out of range' in output, output
 
+
+
+@pytest.mark.parametrize('robot', ['scout', 'rover'])
+def test_exercise_solution_meets_the_robot_spec_for_its_argument(robot: str, ros_env,
+                                                                 tmp_path: Path):
+    """The solution the lesson shows: every node and topic in /<robot>/."""
+    text = (SPECS / 'dock_watch_robot.spec.yaml').read_text().replace('/scout/', f'/{robot}/')
+    (tmp_path / 'robot.spec.yaml').write_text(text)
+    spec = speccheck.load_spec(tmp_path / 'robot.spec.yaml')
+    arguments = {} if robot == 'scout' else {'robot': robot}
+    with _running(str(SOLUTION), arguments, [node.name for node in spec.nodes], ros_env,
+                  package='') as run:
+        settled_graph(_wiring_of(spec), HANG_GUARD)
+        report = speccheck.check_live(spec, window=3.0)
+        exit_code = run.stop()
+    assert exit_code == 0, run.output()
+    assert report.ok, str(report)
+    assert all(node.name.startswith(f'/{robot}/') for node in spec.nodes)
+
+
+def test_every_launch_file_the_lesson_shows_is_tested():
+    tested = {(PACKAGE, name) for _spec_name, name in STATIC}
+    tested |= {(PACKAGE, name) for name, _args in LIVE}
+    tested.add(('ch06_solutions', SOLUTION.name))
+    shown = launch_files_included_by(LESSON)
+    assert shown, f'{LESSON.name} shows no launch file'
+    assert shown <= tested, f'launch files shown but not tested: {sorted(shown - tested)}'
