@@ -28,13 +28,16 @@ DEFAULT_SELECTION = ['tools/cleanroom/tests/cli', 'tests/snippets/test_ch06_less
 
 
 def run_once(workers: int, selection: list[str]) -> tuple[float, int, str]:
-    """Wall seconds, exit code and pytest's last line for one run on `workers` workers."""
+    """Wall seconds, exit code and pytest's summary (its FAILED/ERROR lines and its
+    last line) for one run on `workers` workers."""
     start = time.monotonic()
     result = subprocess.run([sys.executable, '-m', 'textbook', 'test', '-n', str(workers),
                              '-q', '-p', 'no:cacheprovider', *selection],
                             cwd=ROOT, capture_output=True, text=True)
     lines = [line for line in result.stdout.splitlines() if line.strip()]
-    return time.monotonic() - start, result.returncode, lines[-1] if lines else ''
+    failures = [line for line in lines if line.startswith(('FAILED ', 'ERROR '))]
+    return (time.monotonic() - start, result.returncode,
+            '\n'.join([*failures, lines[-1] if lines else '']))
 
 
 def main(argv: list[str] | None = None) -> int:
