@@ -1,0 +1,37 @@
+"""Exercise 6.15.1: a launch test of dock_watch_pkg's dock_watch_v2.launch.py.
+
+    launch_test src/my_ws_exercises/test/test_ex615_dock_watch.py
+
+The check runs this file against the working system and against broken
+versions of dock_watch_pkg: it must pass on the first and fail on each of
+the others.
+"""
+import unittest
+
+import launch
+import launch_testing.actions
+import launch_testing.asserts
+import pytest
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.substitutions import FindPackageShare
+
+
+@pytest.mark.launch_test
+def generate_test_description():
+    """dock_watch_v2.launch.py with its default arguments, as users start it."""
+    system = IncludeLaunchDescription(PythonLaunchDescriptionSource(PathJoinSubstitution(
+        [FindPackageShare('dock_watch_pkg'), 'launch', 'dock_watch_v2.launch.py'])))
+    return launch.LaunchDescription([system, launch_testing.actions.ReadyToTest()])
+
+
+class TestDockWatch(unittest.TestCase):
+    """Active tests: they run while the system runs."""
+
+    # TODO: one or more tests that wait for something only a working system does
+    #       (proc_output.assertWaitFor(...), launch_testing_ros.WaitForTopics(...))
+
+
+# TODO: a post-shutdown test class (@launch_testing.post_shutdown_test()) that
+#       checks how every process ended
