@@ -1,0 +1,1 @@
+"""Nodes of the capstone robot system (chapter 7)."""

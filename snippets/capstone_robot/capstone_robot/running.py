@@ -1,0 +1,31 @@
+"""Run one node until Ctrl+C or the launch stops it: the same ``main`` for every node."""
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+
+
+class ConfigurationError(ValueError):
+    """A parameter value the node cannot work with: logged plainly, exit code 1."""
+
+
+def run(make_node: Callable[[], Node], args: list[str] | None = None) -> int:
+    """Spin the node ``make_node`` builds; 0 when stopped on purpose (Ctrl+C, launch)."""
+    rclpy.init(args=args)
+    node = None
+    try:
+        node = make_node()  # Ctrl+C may come while it starts: it is on the graph already
+        rclpy.spin(node)
+    except ConfigurationError as error:
+        rclpy.logging.get_logger('capstone_robot').fatal(str(error))
+        return 1
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return 0
