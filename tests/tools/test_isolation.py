@@ -1,40 +1,113 @@
-"""Domain leases and the reaper."""
+"""Domain leases (domain_coordinator, IDs 1-89) and the reaper."""
 from __future__ import annotations
 
 import os
-import signal
 import subprocess
+import sys
+import threading
 import time
+import types
+from collections.abc import Iterator
 
+import pytest
+from domain_coordinator.impl import PORT_BASE
 from textbook import isolation, reaper
 
+# Another process of this machine holding a lease, as a parallel test run or lesson would.
+HOLDER = """
+import sys
+from textbook import isolation
+lease = isolation.acquire_domain()
+print(lease.domain_id, flush=True)
+sys.stdin.read()  # held until the test closes stdin or kills this process
+"""
 
-def test_leases_are_exclusive_and_in_range(tmp_path, monkeypatch):
-    monkeypatch.setenv('TMPDIR', str(tmp_path))
+
+def only(domain_id: int) -> range:
+    return range(domain_id, domain_id + 1)
+
+
+@pytest.fixture
+def holder() -> Iterator[tuple[subprocess.Popen, int]]:
+    """A separate process holding one lease; yields it and its domain ID."""
+    proc = subprocess.Popen([sys.executable, '-c', HOLDER], stdin=subprocess.PIPE,
+                            stdout=subprocess.PIPE, text=True)
+    try:
+        line = proc.stdout.readline()  # printed once the lease is held
+        assert line.strip().isdigit(), f'the holder process leased nothing: {line!r}'
+        yield proc, int(line)
+    finally:
+        proc.kill()
+        proc.wait()
+
+
+def test_leases_are_exclusive_in_range_and_released():
     with isolation.acquire_domain() as first, isolation.acquire_domain() as second:
         assert first.domain_id != second.domain_id
         assert {first.domain_id, second.domain_id} <= set(range(1, 90))
-        assert (tmp_path / 'ros2-textbook-domains' / f'{first.domain_id}.lock').exists()
-    with isolation.acquire_domain() as again:
+    with isolation.acquire_domain(timeout=0, ids=only(first.domain_id)) as again:
         assert again.domain_id == first.domain_id  # released ids are reused
 
 
-def test_a_lease_held_by_another_process_is_skipped(tmp_path, monkeypatch):
-    monkeypatch.setenv('TMPDIR', str(tmp_path))
-    lock = tmp_path / 'ros2-textbook-domains' / '1.lock'
-    lock.parent.mkdir()
-    holder = subprocess.Popen(['flock', '--exclusive', str(lock), 'sleep', '30'],
-                              start_new_session=True)
+def test_a_lease_held_by_another_process_is_never_handed_out(holder):
+    proc, held = holder
+    with isolation.acquire_domain() as mine:
+        assert mine.domain_id != held
+    with pytest.raises(RuntimeError) as error:
+        isolation.acquire_domain(timeout=0, ids=only(held))
+    assert str(error.value) == (
+        f'no free ROS domain: IDs {held}-{held} are all held by other runs on this machine '
+        f'(domain_coordinator binds TCP port {PORT_BASE} + ID: ports {PORT_BASE + held}-'
+        f'{PORT_BASE + held} are all in use; too many runs at once?)')
+    proc.kill()  # a holder that dies gives its ID back
+    proc.wait()
+    with isolation.acquire_domain(timeout=0, ids=only(held)) as lease:
+        assert lease.domain_id == held
+
+
+def test_a_full_range_waits_until_an_id_is_released(holder, monkeypatch):
+    proc, held = holder
+    waiting = threading.Event()
+
+    def sleep(seconds: float) -> None:
+        waiting.set()  # every ID of the range was taken: the allocator waits
+        time.sleep(seconds)
+
+    monkeypatch.setattr(isolation, 'time', types.SimpleNamespace(monotonic=time.monotonic,
+                                                                 sleep=sleep))
+    leased: list[isolation.DomainLease] = []
+    waiter = threading.Thread(target=lambda: leased.append(
+        isolation.acquire_domain(timeout=60, ids=only(held))))
+    waiter.start()
     try:
-        for _ in range(50):
-            if subprocess.run(['flock', '-n', str(lock), 'true']).returncode != 0:
-                break
-            time.sleep(0.1)
-        with isolation.acquire_domain() as lease:
-            assert lease.domain_id == 2
+        assert waiting.wait(timeout=30), 'the allocator did not wait for a full range'
+        assert not leased
+        proc.stdin.close()  # the holder ends and releases its ID
+        proc.wait()
     finally:
-        os.killpg(holder.pid, signal.SIGKILL)  # flock and its sleep
-        holder.wait()
+        waiter.join(timeout=90)
+    assert [lease.domain_id for lease in leased] == [held]
+    leased[0].release()
+
+
+def test_the_session_lease_is_held_against_other_processes(session_lease):
+    """Under -n 2 each worker runs this: its ID is refused to every other process."""
+    assert os.environ['ROS_DOMAIN_ID'] == str(session_lease.domain_id)
+    attempt = subprocess.run(
+        [sys.executable, '-c', 'import sys; from textbook import isolation; '
+         f'isolation.acquire_domain(timeout=0, ids=range({session_lease.domain_id}, '
+         f'{session_lease.domain_id + 1}))'],
+        capture_output=True, text=True, timeout=60)
+    assert attempt.returncode != 0
+    assert f'no free ROS domain: IDs {session_lease.domain_id}-{session_lease.domain_id}' \
+        in attempt.stderr
+
+
+def test_an_error_inside_a_lease_propagates_and_releases_it():
+    with pytest.raises(FileNotFoundError), isolation.acquire_domain() as lease:
+        raise FileNotFoundError('raised while the lease is held')
+    with isolation.acquire_domain(timeout=0, ids=only(lease.domain_id)) as again:
+        assert again.domain_id == lease.domain_id
 
 
 def test_env_isolates_and_drops_wider_discovery_settings():

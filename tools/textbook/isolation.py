@@ -1,24 +1,30 @@
 """A private ROS domain for every run, so parallel runs never see each other.
 
-IDs 1-89 are handed out under exclusive, non-blocking ``fcntl.flock`` locks on
-``${TMPDIR:-/tmp}/ros2-textbook-domains/<id>.lock`` (CONTRIBUTING.md); the lock
-is held for as long as the lease lives.  Every environment built from a lease
-also limits discovery to this machine and carries a unique token, which lets
-the reaper find exactly the processes that this run started.
+IDs 1-89 come from ROS 2's own allocator, ``domain_coordinator`` (the
+package ament_cmake_ros's isolated tests use): a lease binds TCP port
+32768 + ID, so the kernel itself guarantees that no two live holders on this
+machine get the same ID and frees it when the holder closes it or dies.  The
+lease is held for as long as this object lives.  Every environment built from a
+lease also limits discovery to this machine and carries a unique token, which
+lets the reaper find exactly the processes that this run started.
 
-The clean room's launch_testing leases domains the same way for its own
-runs (launch_testing/domain_isolation.py, also used by the clean-room tests
-and benchmark); the book keeps this copy because it must run where a real
-ROS 2 is installed and the clean room is not.
+The clean room's launch_testing (launch_testing/domain_isolation.py) leases
+through the same library; neither side imports the other (ARCHITECTURE.md).
 """
 from __future__ import annotations
 
-import fcntl
+import contextlib
+import itertools
 import os
-import tempfile
 import time
 import uuid
-from pathlib import Path
+
+try:
+    import domain_coordinator
+    from domain_coordinator.impl import PORT_BASE
+except ImportError as missing:  # a real ROS 2 install without the package
+    raise ImportError("the book isolates every run with ROS 2's domain_coordinator: "
+                      'sudo apt install ros-jazzy-domain-coordinator (README)') from missing
 
 DOMAIN_IDS = range(1, 90)
 LEASE_VAR = 'TEXTBOOK_ROS_LEASE'
@@ -27,20 +33,13 @@ _DISCOVERY_VARS = ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS', 'ROS_DISCOVERY_SERV
                    'FASTRTPS_DEFAULT_PROFILES_FILE', 'FASTDDS_DEFAULT_PROFILES_FILE')
 
 
-def lock_dir() -> Path:
-    """The shared lock folder, created on first use."""
-    path = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
-    path.mkdir(parents=True, exist_ok=True)
-    return path
-
-
 class DomainLease:
     """Exclusive use of one ROS_DOMAIN_ID until :meth:`release` (or ``with`` exit)."""
 
-    def __init__(self, domain_id: int, fd: int) -> None:
+    def __init__(self, domain_id: int, hold: contextlib.ExitStack) -> None:
         self.domain_id = domain_id
         self.token = f'{domain_id}-{os.getpid()}-{uuid.uuid4().hex[:12]}'
-        self._fd: int | None = fd
+        self._hold = hold
 
     def env(self) -> dict[str, str]:
         """The variables that put a process into this lease's private domain."""
@@ -57,9 +56,8 @@ class DomainLease:
         return env
 
     def release(self) -> None:
-        if self._fd is not None:
-            os.close(self._fd)  # closing drops the flock
-            self._fd = None
+        """Give the ID back (closes domain_coordinator's socket); safe to repeat."""
+        self._hold.close()
 
     def __enter__(self) -> DomainLease:
         return self
@@ -71,28 +69,29 @@ class DomainLease:
         return f'DomainLease(domain_id={self.domain_id})'
 
 
-def _try_lock(domain_id: int) -> int | None:
-    fd = os.open(lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
+def _try_lease(ids: range) -> DomainLease | None:
+    """One pass of domain_coordinator over ``ids``; None when every one is held."""
+    hold = contextlib.ExitStack()
+    candidates = itertools.cycle(ids)
     try:
-        fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-    except BlockingIOError:
-        os.close(fd)
+        # Entered by the stack and left with no exception on release: an error
+        # raised while the lease is held never reaches the library's generator.
+        domain_id = hold.enter_context(
+            domain_coordinator.domain_id(selector=lambda: next(candidates)))
+    except RuntimeError:  # 'Failed to get a unique ROS domain ID'
         return None
-    os.ftruncate(fd, 0)
-    os.write(fd, f'{os.getpid()}\n'.encode())  # who holds it, for humans
-    return fd
+    return DomainLease(domain_id, hold)
 
 
-def acquire_domain(timeout: float = 120.0) -> DomainLease:
-    """Lease a free domain ID; waits while all 89 are taken, fails after ``timeout``."""
+def acquire_domain(timeout: float = 120.0, ids: range = DOMAIN_IDS) -> DomainLease:
+    """Lease a free domain ID of ``ids``; waits while all are taken, fails after ``timeout``."""
     deadline = time.monotonic() + timeout
-    while True:
-        for domain_id in DOMAIN_IDS:
-            fd = _try_lock(domain_id)
-            if fd is not None:
-                return DomainLease(domain_id, fd)
-        if time.monotonic() > deadline:
+    while (lease := _try_lease(ids)) is None:
+        if time.monotonic() >= deadline:
             raise RuntimeError(
-                f'no free ROS domain: IDs {DOMAIN_IDS.start}-{DOMAIN_IDS.stop - 1} are all '
-                f'locked in {lock_dir()} (too many runs on this machine?)')
+                f'no free ROS domain: IDs {ids.start}-{ids.stop - 1} are all held by other '
+                f'runs on this machine (domain_coordinator binds TCP port {PORT_BASE} + ID: '
+                f'ports {PORT_BASE + ids.start}-{PORT_BASE + ids.stop - 1} are all in use; '
+                f'too many runs at once?)')
         time.sleep(0.5)
+    return lease
