@@ -39,7 +39,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from launch_testing.domain_isolation import lease_free_domain
+from launch_testing.domain_isolation import lease_domain
 
 # Jazzy on a 2-core machine: N -> (all started, start to clean shutdown), seconds.
 REFERENCE: dict[int, tuple[float | None, float | None]] = {
@@ -100,14 +100,6 @@ PACKAGE_XML = """<?xml version="1.0"?>
   <export><build_type>ament_python</build_type></export>
 </package>
 """
-
-
-def lease_ros_domain() -> tuple[int, int]:
-    """Lock a free ROS domain ID in 1-89 (CONTRIBUTING.md allocator); return (id, fd)."""
-    lease = lease_free_domain()
-    if lease is None:
-        sys.exit('no free ROS domain ID in 1-89')
-    return lease
 
 
 def build_talker_package(root: Path) -> Path:
@@ -237,7 +229,8 @@ def main() -> int:
     parser.add_argument('--counts', type=int, nargs='+', default=[1, 10, 30])
     parser.add_argument('--repeat', type=int, default=3)
     opts = parser.parse_args()
-    domain_id, lock_fd = lease_ros_domain()
+    lease = lease_domain()  # the allocator of CONTRIBUTING.md; held until the table is done
+    domain_id = lease.domain_id
     os.environ.update({'ROS_DOMAIN_ID': str(domain_id),
                        'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
                        'RCUTILS_COLORIZED_OUTPUT': '0'})
@@ -261,7 +254,7 @@ def main() -> int:
                     sys.stdout = saved
             results[count] = {key: statistics.median(r[key] for r in runs) for key in runs[0]}
             floors[count] = {key: statistics.median(r[key] for r in direct) for key in direct[0]}
-    os.close(lock_fd)
+    lease.release()
     print(f'\nmedian of {opts.repeat} runs, seconds from the start of the launch; '
           'floor: the same talkers without launch, this run; Jazzy: real launch, 2 cores')
     header = (f"{'N':>4} | {'started':>8} {'Jazzy':>6} {'ratio':>6} | {'ready':>6} {'floor':>6} | "

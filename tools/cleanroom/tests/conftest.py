@@ -1,11 +1,10 @@
-"""Session fixture of the clean-room tests: a private ROS domain (see ros_domains.py).
+"""Session fixture of the clean-room tests: a private ROS domain.
 
 Collected only where the clean room is the `launch` in use (not over a real ROS 2).
 
-Domains come from the allocator described in CONTRIBUTING.md: IDs 1-89,
-each guarded by `${TMPDIR:-/tmp}/ros2-textbook-domains/<id>.lock`, locked
-with fcntl.flock (exclusive, non-blocking) and held for the whole session,
-so parallel runs on one machine never share a domain.
+Domains come from the allocator described in CONTRIBUTING.md (IDs 1-89 from
+domain_coordinator, through launch_testing.domain_isolation), held for the
+whole session, so parallel runs on one machine never share a domain.
 """
 from __future__ import annotations
 
@@ -30,8 +29,9 @@ def ros_domain() -> Iterator[int]:
     """Lease a domain for the session and export it (with LOCALHOST discovery)."""
     # Imported here: the allocator is the clean room's launch_testing's, and over
     # a real ROS 2 this conftest must load without it (nothing is collected then).
-    from ros_domains import lease_ros_domain
-    domain_id, fd = lease_ros_domain()
+    from launch_testing.domain_isolation import lease_domain
+    lease = lease_domain()
+    domain_id = lease.domain_id
     keys = ('ROS_DOMAIN_ID', 'ROS_AUTOMATIC_DISCOVERY_RANGE', 'ROS_LOCALHOST_ONLY')
     saved = {key: os.environ.get(key) for key in keys}
     os.environ.update({'ROS_DOMAIN_ID': str(domain_id),
@@ -45,4 +45,4 @@ def ros_domain() -> Iterator[int]:
                 os.environ.pop(key, None)
             else:
                 os.environ[key] = value
-        os.close(fd)
+        lease.release()

@@ -1,42 +1,67 @@
 """A private ROS_DOMAIN_ID for a test run whose caller did not choose one.
 
-Uses the machine-wide allocator of this project (CONTRIBUTING.md): IDs 1-89,
-each guarded by `${TMPDIR:-/tmp}/ros2-textbook-domains/<id>.lock` and held
-with an exclusive fcntl.flock for as long as the run lasts, so parallel test
-runs never see each other's nodes.
+IDs 1-89 (CONTRIBUTING.md) come from ROS 2's own allocator,
+``domain_coordinator``: a lease binds TCP port 32768 + ID, so no two live
+holders on this machine share an ID and the ID comes back when the holder
+releases it or dies.  The book's tools lease through the same library
+(tools/textbook/isolation.py); this distribution does not import them.
 """
 from __future__ import annotations
 
 import contextlib
-import fcntl
+import itertools
 import os
-import tempfile
 import time
 from collections.abc import Iterator
-from pathlib import Path
+
+import domain_coordinator
+from domain_coordinator.impl import PORT_BASE
 
 DOMAIN_IDS = range(1, 90)
 
 
-def lock_dir() -> Path:
-    folder = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-textbook-domains'
-    folder.mkdir(parents=True, exist_ok=True)
-    return folder
+class DomainLease:
+    """One ROS domain ID held until :meth:`release` (or ``with`` exit)."""
+
+    def __init__(self, domain_id: int, hold: contextlib.ExitStack) -> None:
+        self.domain_id = domain_id
+        self._hold = hold
+
+    def release(self) -> None:
+        """Give the ID back; safe to repeat."""
+        self._hold.close()
+
+    def __enter__(self) -> DomainLease:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.release()
 
 
-def lease_free_domain() -> tuple | None:
-    """Lock the first free domain ID; (domain id, fd holding the lock), or None."""
-    for domain_id in DOMAIN_IDS:
-        fd = os.open(lock_dir() / f'{domain_id}.lock', os.O_RDWR | os.O_CREAT, 0o666)
-        try:
-            fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-        except BlockingIOError:
-            os.close(fd)
-            continue
-        os.ftruncate(fd, 0)
-        os.write(fd, f'{os.getpid()}\n'.encode())
-        return domain_id, fd
-    return None
+def _try_lease(ids: range) -> DomainLease | None:
+    hold = contextlib.ExitStack()
+    candidates = itertools.cycle(ids)
+    try:
+        # Left with no exception on release: an error raised while the lease
+        # is held never reaches the library's generator.
+        domain_id = hold.enter_context(
+            domain_coordinator.domain_id(selector=lambda: next(candidates)))
+    except RuntimeError:  # 'Failed to get a unique ROS domain ID'
+        return None
+    return DomainLease(domain_id, hold)
+
+
+def lease_domain(timeout: float = 60.0, ids: range = DOMAIN_IDS) -> DomainLease:
+    """Lease a free ID of ``ids``, waiting while all are held; RuntimeError after ``timeout``."""
+    deadline = time.monotonic() + timeout
+    while (lease := _try_lease(ids)) is None:
+        if time.monotonic() >= deadline:
+            raise RuntimeError(
+                f'no free ROS_DOMAIN_ID in {ids.start}-{ids.stop - 1}: every one is held by '
+                f'another run on this machine (domain_coordinator binds TCP port {PORT_BASE} '
+                f'+ ID: ports {PORT_BASE + ids.start}-{PORT_BASE + ids.stop - 1} are all in use)')
+        time.sleep(0.5)
+    return lease
 
 
 @contextlib.contextmanager
@@ -49,18 +74,9 @@ def isolated_domain(timeout: float = 60.0) -> Iterator[int | None]:
     if os.environ.get('ROS_DOMAIN_ID'):
         yield None
         return
-    deadline = time.monotonic() + timeout
-    lease = lease_free_domain()
-    while lease is None:
-        if time.monotonic() > deadline:
-            raise RuntimeError('no free ROS_DOMAIN_ID in 1-89: every one is held by '
-                               f'another test run (locks in {lock_dir()})')
-        time.sleep(0.5)
-        lease = lease_free_domain()
-    domain_id, fd = lease
-    os.environ['ROS_DOMAIN_ID'] = str(domain_id)
-    try:
-        yield domain_id
-    finally:
-        os.environ.pop('ROS_DOMAIN_ID', None)
-        os.close(fd)
+    with lease_domain(timeout) as lease:
+        os.environ['ROS_DOMAIN_ID'] = str(lease.domain_id)
+        try:
+            yield lease.domain_id
+        finally:
+            os.environ.pop('ROS_DOMAIN_ID', None)

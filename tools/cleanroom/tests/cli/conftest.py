@@ -1,6 +1,6 @@
 """Fixtures of the `ros2 node|topic|param` tests.
 
-Each test module gets its own ROS domain (same lock-file allocator as
+Each test module gets its own ROS domain (same allocator as
 ../conftest.py, CONTRIBUTING.md), so the graph a module lists holds exactly
 the sample nodes it started, even if an earlier module's nodes are still
 being forgotten by discovery.  Every process started here runs in its own
@@ -17,7 +17,7 @@ from pathlib import Path
 
 import psutil
 import pytest
-from ros_domains import lease_ros_domain
+from launch_testing.domain_isolation import lease_domain
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')
 SAMPLE_NODES = str(Path(__file__).with_name('sample_nodes.py'))
@@ -26,7 +26,8 @@ SAMPLE_NODES = str(Path(__file__).with_name('sample_nodes.py'))
 @pytest.fixture(scope='module')
 def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]]:
     """Environment for the commands and nodes of one test module: a private domain."""
-    domain_id, fd = lease_ros_domain()
+    lease = lease_domain()
+    domain_id = lease.domain_id
     env = {k: v for k, v in os.environ.items()
            if k not in ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS')}
     env.update(ROS_DOMAIN_ID=str(domain_id), ROS_AUTOMATIC_DISCOVERY_RANGE='LOCALHOST',
@@ -35,7 +36,7 @@ def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
     try:
         yield env
     finally:
-        os.close(fd)
+        lease.release()
 
 
 def stop_process(proc: subprocess.Popen, grace: float = 5.0) -> None:

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import psutil
 import pytest
-from ros_domains import lease_ros_domain
+from launch_testing.domain_isolation import lease_domain
 
 HERE = Path(__file__).parent
 TOKEN_VAR = 'LAUNCH_ROS_TEST_TOKEN'
@@ -37,7 +37,8 @@ class DomainLease:
     """One locked ROS domain ID and the token marking the processes started under it."""
 
     def __init__(self) -> None:
-        self.domain_id, self._fd = lease_ros_domain()
+        self._lease = lease_domain()
+        self.domain_id = self._lease.domain_id
         self.token = uuid.uuid4().hex
 
     def env(self) -> dict[str, str]:
@@ -45,7 +46,7 @@ class DomainLease:
                 'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST', TOKEN_VAR: self.token}
 
     def release(self) -> None:
-        os.close(self._fd)
+        self._lease.release()
 
 
 @pytest.fixture(scope='session')
