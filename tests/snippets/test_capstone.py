@@ -110,11 +110,18 @@ def _start(launch_file: str, ros_env: dict[str, str], **arguments: str) -> labki
                          cwd=paths.WORKSPACE)
 
 
-def _pid(run: labkit.Background, process: str, after: int = 0) -> int:
-    """The pid of the latest start of ``process`` (e.g. 'safety_monitor') after ``after``."""
-    line = run.wait_for_output(
-        rf'\[{process}-\d+\]: process started with pid \[(?!{after}\])\d+\]', HANG_GUARD)
+def _pid(run: labkit.Background, process: str) -> int:
+    """The pid of the first start of ``process`` (e.g. 'safety_monitor')."""
+    line = run.wait_for_output(rf'\[{process}-\d+\]: process started with pid', HANG_GUARD)
     return int(re.search(r'pid \[(\d+)\]', line).group(1))
+
+
+def _next_line(run: labkit.Background, pattern: str, after: int) -> int:
+    """The index of the first line after line ``after`` that matches ``pattern``."""
+    regex = re.compile(pattern)
+    return wait_for(lambda: next((index for index, line in enumerate(run.lines)
+                                  if index > after and regex.search(line)), None),
+                    HANG_GUARD, f'a line matching {pattern!r} after line {after}')
 
 
 def _node_log(robot: str, node: str, text: str) -> str:
@@ -245,12 +252,15 @@ def test_respawn_and_shutdown_when_the_safety_monitor_dies(ros_env):
         run.wait_for_nodes(['/turtlesim', *robot_nodes('turtle1')], timeout=HANG_GUARD)
         run.wait_for_output(_node_log('turtle1', 'mission_recorder', 'Active'), HANG_GUARD)
         sensor = _pid(run, 'wall_sensor')
+        killed_at = len(run.lines) - 1
         os.kill(sensor, signal.SIGKILL)
-        respawned = _pid(run, 'wall_sensor', after=sensor)
-        run.wait_for_output(_node_log('turtle1', 'safety_monitor',
-                                      'Safety stop: no wall reading for 1.0 s'), HANG_GUARD)
-        run.wait_for_output(_node_log('turtle1', 'wall_sensor', 'Measuring walls'), HANG_GUARD)
-        run.wait_for_output(_node_log('turtle1', 'safety_monitor', 'Clear'), HANG_GUARD)
+        # Lines after the kill only: the same lines also come at start-up.
+        restart = _next_line(run, r'\[wall_sensor-\d+\]: process started with pid', killed_at)
+        respawned = int(re.search(r'pid \[(\d+)\]', run.lines[restart]).group(1))
+        _next_line(run, _node_log('turtle1', 'safety_monitor',
+                                  'Safety stop: no wall reading for 1.0 s'), killed_at)
+        ready = _next_line(run, _node_log('turtle1', 'wall_sensor', 'Measuring walls'), restart)
+        _next_line(run, _node_log('turtle1', 'safety_monitor', 'Clear'), ready)
         os.kill(_pid(run, 'safety_monitor'), signal.SIGKILL)
         wait_for(lambda: not run.running, HANG_GUARD, 'the launch to end by itself')
         code = run.returncode
