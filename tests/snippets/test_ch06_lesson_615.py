@@ -10,7 +10,8 @@ the rate of requirement R2 is planted back to 2.0 in the copy's launch file
 `launch_test` on the test file, and the pitfalls the lesson shows live: a
 test that never waits passes on a broken system; a test that only listens to
 /battery_low passes on a broken system while a working copy runs in the same
-domain, and fails without it.  Every run is marked in its environment, and
+domain, and fails without it; a check that reads the output once passes
+after a test that waited.  Every run is marked in its environment, and
 none of its processes may outlive it.
 """
 from __future__ import annotations
@@ -151,3 +152,17 @@ def test_a_topic_check_hears_another_system_in_the_same_domain(run_env):
     assert alone.returncode == 1, alone.stdout + alone.stderr
     assert _verdicts(alone.stderr) == {'test_battery_low_published': 'ERROR'}
     assert 'Did not receive messages on these topics within 15.0 s: battery_low' in alone.stderr
+
+
+def test_reading_the_output_once_passes_only_after_a_test_that_waited(run_env):
+    """test_c is test_a's check, run after test_b waited for the line: it must pass.
+    (test_a's own result depends on timing, which is the lesson's point, so it is
+    not asserted here.)"""
+    result = _run([paths.executable('launch_test'), str(TESTS / 'pitfalls' / 'reads_once.py'),
+                   f'system:={SOURCE / "launch" / "dock_watch_v2.launch.py"}'],
+                  run_env, paths.WORKSPACE)
+    verdicts = _verdicts(result.stderr)
+    assert set(verdicts) == {'test_a_reads_once', 'test_b_waits', 'test_c_reads_once'}, \
+        result.stderr
+    assert (verdicts['test_b_waits'], verdicts['test_c_reads_once']) == ('ok', 'ok'), \
+        result.stderr
