@@ -33,7 +33,8 @@ from ._turtlesim_client import SimClient, load_turtlesim_interfaces
 from ._wiring import Wiring, wiring
 
 INSTALL = workspace.ensure_built()
-load_turtlesim_interfaces(INSTALL)
+if (INSTALL / 'turtlesim/share/turtlesim/HEADLESS').is_file():  # else a real one is installed
+    load_turtlesim_interfaces(INSTALL)
 
 
 def _load_interfaces(package: str) -> None:
