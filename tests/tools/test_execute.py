@@ -76,3 +76,20 @@ def test_processes_left_running_are_killed_and_fail_the_lesson(tmp_path):
     assert 'sleep 300' in str(error.value)
     pid = int(str(error.value).split('pid ')[1].split(':')[0])
     assert not psutil.pid_exists(pid) or psutil.Process(pid).status() == psutil.STATUS_ZOMBIE
+
+
+def test_a_lesson_runs_where_no_project_configuration_applies(tmp_path):
+    """pytest, run by a lesson's `colcon test`, finds the rootdir and ini a student's
+    ~/ros2_ws has: none of this repository's files above the workspace."""
+    cell = (
+        'import os, subprocess\n'
+        "os.makedirs('src/demo/test', exist_ok=True)\n"
+        "open('src/demo/test/test_demo.py', 'w').write('def test_demo():\\n    pass\\n')\n"
+        "command = ['python', '-m', 'pytest', 'src/demo/test', '-p', 'no:cacheprovider']\n"
+        'print(subprocess.run(command, capture_output=True, text=True).stdout)')
+    notebook = execute.execute(load(write_lesson(tmp_path, code_cells(cell))))
+    output = ''.join(out.get('text', '') for cell in notebook.cells
+                     for out in cell.get('outputs', []))
+    assert '1 passed' in output, output
+    rootdir = next(line for line in output.splitlines() if line.startswith('rootdir: '))
+    assert str(paths.ROOT) not in rootdir and 'configfile' not in output, output

@@ -4,6 +4,7 @@ from __future__ import annotations
 import os
 import shutil
 import sys
+import tempfile
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -14,7 +15,11 @@ BUILD = ROOT / 'build'
 WORKSPACE = BUILD / 'ws'
 NOTEBOOKS = BUILD / 'notebooks'
 CACHE = BUILD / 'cache'
-RUNS = BUILD / 'run'
+# Lessons and lab kernels run in folders shaped like ~/ros2_ws, outside the
+# repository: inside it, a student's `colcon test` would find this repository's
+# pytest configuration above the workspace (pytest looks upwards for one) and
+# report test names a student's machine never shows.
+RUNS = Path(os.environ.get('TMPDIR') or tempfile.gettempdir()) / 'ros2-launch-textbook-runs'
 TOOLS = ROOT / 'tools'
 MKDOCS_YML = ROOT / 'mkdocs.yml'
 
