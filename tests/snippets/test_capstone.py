@@ -28,7 +28,7 @@ from lifecycle_msgs.srv import GetState
 from textbook import paths, workspace
 
 from .._polling import wait_for
-from ._launch_log import ENDED, STARTED
+from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
 from ._turtlesim_client import SimClient, load_turtlesim_interfaces
 from ._wiring import Wiring, wiring
 
@@ -60,6 +60,8 @@ _load_interfaces('capstone_interfaces')
 
 from capstone_interfaces.srv import SetMode  # noqa: E402
 from turtlesim.msg import Pose  # noqa: E402
+
+pytestmark = DDS_SHUTDOWN_HANG  # sixteen nodes stop at once in each test
 
 PACKAGE = 'capstone_bringup'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'
