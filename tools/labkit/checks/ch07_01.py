@@ -1,0 +1,130 @@
+"""Checks of lesson 7.1 (The specification, of the capstone).
+
+Exercise 7.1.1 grades a spec file by what it does, as exercise 6.8.1 does:
+the student's spec for the new requirement R9 (a third robot, turtle3) is
+run through `python -m speccheck live`, as their terminal would run it,
+against the capstone with `robot_count:=3`, which meets R9 (it must pass),
+then against two systems that do not: the capstone with two robots, and
+one where turtle3 runs with turtle4's configuration (both must fail).
+The capstone builds its robots in an OpaqueFunction, which the static check
+cannot see into, so every stage is a running check.
+"""
+from __future__ import annotations
+
+import re
+import subprocess
+import sys
+from dataclasses import dataclass
+
+from labkit.grading.exercise import SNIPPETS, Exercise
+from labkit.grading.student_package import StudentPackage
+from labkit.grading.verdict import Verdict
+
+SPEC = 'specs/ex71_third_robot.spec.yaml'
+BOOK_PACKAGE = 'capstone_bringup'
+SYSTEM = 'capstone.launch.py'
+DEFECT = SNIPPETS / 'ch07_defects' / 'turtle3_other_config.launch.py'
+SPEC_TIMEOUT = 180.0  # seconds; only stops a hung run, never a speed limit
+SHOWN_FINDINGS = 6
+#: a ROS name in a finding; the capstone's all start with a turtle or turtlesim
+ROS_NAME = re.compile(r'(?<![\w.])/[A-Za-z_][\w/]*')
+IN_THE_SYSTEM = re.compile(r'^/(turtle\d+|turtlesim)(/|$)')
+
+
+@dataclass(frozen=True)
+class System:
+    """A system the spec is run against: how to start it and what is wrong with it."""
+
+    launch: tuple[str, ...]  # speccheck's arguments after the spec
+    shown: str
+    defect: str = ''  # '' for the system that meets R9
+    need: str = ''  # what the spec must say to catch the defect
+
+
+MEETS_R9 = System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=3'),
+                  f'{SYSTEM} robot_count:=3')
+DEFECTS = (
+    System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=2'), f'{SYSTEM} robot_count:=2',
+           'there is no third robot', "name turtle3's nodes (/turtle3/...) in your spec"),
+    System((str(DEFECT),), DEFECT.name,
+           "turtle3 runs with turtle4's configuration (its route along the bottom edge, "
+           'stop_distance 1.0)',
+           "give turtle3's waypoints and stop_distance the values R9 fixes, not only types"),
+)
+
+
+@dataclass(frozen=True)
+class SpecRun:
+    """One `python -m speccheck live` run: the command shown, exit code and output."""
+
+    command: str
+    returncode: int
+    stdout: str
+    stderr: str
+
+    @property
+    def failed(self) -> list[str]:
+        return [line.strip().removeprefix('FAILED').strip()
+                for line in self.stdout.splitlines() if line.startswith('  FAILED')]
+
+    @property
+    def error(self) -> str:
+        return self.stderr.strip() or self.stdout.strip()
+
+
+def run_speccheck(package: StudentPackage, system: System) -> SpecRun:
+    """The student's spec against `system`, running, in their workspace's environment."""
+    spec = package.source / SPEC
+    argv = [sys.executable, '-m', 'speccheck', 'live', str(spec), *system.launch]
+    shown = f'python -m speccheck live {package.shown(spec)} {" ".join(system.launch)}'
+    done = subprocess.run(argv, env=package.environment(), cwd=package.workspace,
+                          capture_output=True, text=True, timeout=SPEC_TIMEOUT, check=False)
+    return SpecRun(shown, done.returncode, done.stdout, done.stderr)
+
+
+def _why(failed: list[str]) -> str:
+    names = [name for line in failed for name in ROS_NAME.findall(line)]
+    if any(not IN_THE_SYSTEM.match(name) for name in names):
+        return ('your spec names nodes or topics the system does not have: write each name '
+                'fully qualified, with its namespace (/turtle3/...)')
+    return 'your spec asks for something R9 does not say (compare with config/turtle3.yaml)'
+
+
+def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
+    run = run_speccheck(package, MEETS_R9)
+    if run.returncode == 2:
+        return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
+    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
+    return verdict.expect(
+        run.returncode == 0 and not run.failed,
+        f'the running check of {MEETS_R9.shown}, which meets R9, passes with your spec',
+        f'the running check of {MEETS_R9.shown}, which meets R9, fails with your spec: '
+        f'{_why(run.failed)}. `{run.command}` reported:\n      {findings}')
+
+
+def _catches(verdict: Verdict, package: StudentPackage, system: System) -> None:
+    run = run_speccheck(package, system)
+    first = run.failed[0] if run.failed else run.error
+    verdict.expect(
+        run.returncode == 1 and bool(run.failed),
+        f'the running check catches {system.shown} ({system.defect}): {first}',
+        f'your spec passes {system.shown}, where {system.defect}: {system.need}')
+
+
+def check_third_robot(package: StudentPackage, verdict: Verdict) -> Verdict:
+    """The student's spec passes the capstone with three robots and fails both defects."""
+    spec = package.source / SPEC
+    if not spec.is_file():
+        return verdict.fail(f'{package.shown(spec)} does not exist: run '
+                            "labkit.exercises.setup('ex71_third_robot') to create the starter")
+    if not _passes_the_system(verdict, package):
+        return verdict
+    for system in DEFECTS:
+        _catches(verdict, package, system)
+    return verdict
+
+
+EXERCISES = (
+    Exercise('ex71_third_robot', "Exercise 7.1.1 (the third robot's requirement as a spec)",
+             (SPEC,), check_third_robot),
+)
