@@ -61,7 +61,8 @@ def _expected_phrases(case: Case) -> list[str]:
 #: Book packages the exercises' nodes come from, built next to the cases so
 #: the test does not depend on the rest of snippets/.
 BOOK_PACKAGES = ('my_robot_pkg', 'comms_demo_pkg', 'tuning_demo_pkg', 'robot_bringup',
-                 'dock_watch_pkg', 'rover_config')
+                 'dock_watch_pkg', 'rover_config', 'turtlesim', 'capstone_interfaces',
+                 'capstone_robot', 'capstone_bringup')
 
 
 @pytest.fixture(scope='module')
