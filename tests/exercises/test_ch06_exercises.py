@@ -2,11 +2,11 @@
 and on each catalogued wrong answer (naming the mistake), and passes on the
 book's solution.
 
-The book packages the exercises use are built once per test process into an
-underlay; each exercise then gets its own overlay workspace, built on first
-use, holding one copy of the student's package per case (`ex_starter`,
-`ex_solution`, `ex_wrong_<n>`).  A student's overlay on a sourced workspace
-works the same way, and `-k ex611` builds only what exercise 6.11 needs.
+The book's snippets workspace (built once) is the underlay; each exercise
+gets its own overlay workspace, built on first use, holding one copy of the
+student's package per case (`ex_starter`, `ex_solution`, `ex_wrong_<n>`).
+A student's overlay on a sourced workspace works the same way, and
+`-k ex611` builds only what exercise 6.11 needs.
 Each check launches its case as a student's terminal would.  New exercises
 and wrong answers are picked up from labkit.checks and
 `snippets/<solutions>/wrong/` without touching this file.
@@ -15,7 +15,6 @@ from __future__ import annotations
 
 import os
 import re
-import shutil
 import subprocess
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -24,7 +23,7 @@ from pathlib import Path
 import pytest
 from labkit import checks, exercises
 from labkit.grading.student_package import StudentPackage
-from textbook import paths
+from textbook import paths, workspace
 
 VERDICT_NAMES = re.compile(r'^# Verdict names: (.+)$', re.MULTILINE)
 
@@ -58,13 +57,6 @@ def _expected_phrases(case: Case) -> list[str]:
     return [phrase.strip() for f in files for phrase in VERDICT_NAMES.findall(f.read_text())]
 
 
-#: Book packages the exercises' nodes come from, built next to the cases so
-#: the test does not depend on the rest of snippets/.
-BOOK_PACKAGES = ('my_robot_pkg', 'comms_demo_pkg', 'tuning_demo_pkg', 'robot_bringup',
-                 'dock_watch_pkg', 'rover_config', 'turtlesim', 'capstone_interfaces',
-                 'capstone_robot', 'capstone_bringup')
-
-
 @pytest.fixture(scope='module')
 def lesson_environment():
     """os.environ as in a lesson kernel: this process's ROS domain, the project's
@@ -82,14 +74,11 @@ def _colcon_build(workspace: Path, env: dict[str, str] | None = None) -> None:
 
 
 @pytest.fixture(scope='module')
-def book_underlay(tmp_path_factory, lesson_environment) -> StudentPackage:
-    """The book packages, built once: the underlay every exercise workspace sources."""
-    workspace = tmp_path_factory.mktemp('exercise_book_packages')
-    for package in BOOK_PACKAGES:
-        shutil.copytree(paths.SNIPPETS / package, workspace / 'src' / package,
-                        ignore=shutil.ignore_patterns('__pycache__'))
-    _colcon_build(workspace)
-    return StudentPackage(workspace)
+def book_underlay(lesson_environment) -> StudentPackage:
+    """The book's snippets workspace (built once per session for every test that needs
+    it): the underlay every exercise workspace sources, as a lesson's workspace has
+    the book's packages next to the student's."""
+    return StudentPackage(workspace.ensure_built().resolve().parent)
 
 
 @pytest.fixture(scope='module')
