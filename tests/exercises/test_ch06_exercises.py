@@ -98,12 +98,18 @@ def exercise_workspaces(tmp_path_factory, book_underlay: StudentPackage
 
 
 def _build_cases(workspace: Path, exercise_id: str, underlay: dict[str, str]) -> Path:
-    exercises.setup(exercise_id, workspace=workspace, package='ex_starter')
-    exercises.setup(exercise_id, workspace=workspace, package='ex_solution')
-    exercises.use_solution(exercise_id, force=True, workspace=workspace, package='ex_solution')
+    """The cases of one exercise, each a whole student package as the book's
+    lessons leave it: every exercise's starter files (an exercise may build on an
+    earlier one's file, as 6.2.2 on 6.2.1's), the solution package with every
+    solution, a wrong answer over the starters."""
+    ids = list(checks.EXERCISES)
+    exercises.setup(*ids, workspace=workspace, package='ex_starter')
+    exercises.setup(*ids, workspace=workspace, package='ex_solution')
+    for solved in ids:
+        exercises.use_solution(solved, force=True, workspace=workspace, package='ex_solution')
     for case in CASES:
         if case.kind == 'wrong' and case.exercise == exercise_id:
-            exercises.setup(exercise_id, workspace=workspace, package=case.package)
+            exercises.setup(*ids, workspace=workspace, package=case.package)
             answer = checks.find(exercise_id).wrong_answers()[case.name]
             for relative, source in answer.items():  # named for its package, like the rest
                 exercises.copy_for_package(source, workspace / 'src' / case.package / relative,
