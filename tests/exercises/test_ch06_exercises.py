@@ -128,8 +128,13 @@ def test_every_exercise_has_wrong_answers_that_say_what_the_check_reports():
                 f'wrong answer {exercise.id}/{name} has no "# Verdict names: ..." line'
 
 
+def _on_one_worker(case: Case) -> object:
+    """The cases of one exercise share a test worker, so its workspace is built once."""
+    return pytest.param(case, id=str(case), marks=pytest.mark.xdist_group(case.exercise))
+
+
 @pytest.mark.timeout(900)
-@pytest.mark.parametrize('case', CASES, ids=str)
+@pytest.mark.parametrize('case', [_on_one_worker(case) for case in CASES])
 def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
         case: Case, exercise_workspaces: Callable[[str], Path], lesson_environment):
     workspace = exercise_workspaces(case.exercise)
