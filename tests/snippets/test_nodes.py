@@ -89,10 +89,17 @@ def test_there_are_executables():
     assert EXECUTABLES, 'no executables installed from snippets/'
 
 
+#: What an executable needs to start at all, as its launch file gives it.
+REQUIRED_ARGUMENTS = {
+    ('capstone_robot', 'spawner'): ('-p', 'turtle_name:=probe_turtle'),  # else it refuses
+}
+
+
 @pytest.mark.parametrize('package,exe', EXECUTABLES, ids=lambda v: v)
 def test_node_starts_and_stops_cleanly(package, exe, ros_env, graph):
     probe = f'probe_{exe}'
-    node = NodeProcess(ros_env, package, exe, '-r', f'__node:={probe}')
+    node = NodeProcess(ros_env, package, exe, '-r', f'__node:={probe}',
+                       *REQUIRED_ARGUMENTS.get((package, exe), ()))
     appeared = _wait_for_node(graph, probe, node.proc)
     code = node.stop()
     assert appeared, f'{package}/{exe} never appeared on the ROS graph:\n{node.output}'
