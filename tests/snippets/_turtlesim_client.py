@@ -20,9 +20,10 @@ from rclpy.executors import SingleThreadedExecutor
 LIMIT = 30.0  # seconds; a hang guard, not a speed requirement
 
 
-def load_turtlesim_interfaces(install: Path) -> None:
-    """Make ``import turtlesim`` / ``turtlesim_headless`` work in this process."""
-    prefix = install / 'turtlesim'
+def load_interfaces(install: Path, package: str) -> None:
+    """Make ``import <package>`` of an interface package built into ``install`` work
+    in this process (turtlesim, capstone_interfaces)."""
+    prefix = install / package
     lib = prefix / 'lib'
     # rosidl finds the typesupport libraries on LD_LIBRARY_PATH when a type is used.
     os.environ['LD_LIBRARY_PATH'] = os.pathsep.join(
@@ -40,6 +41,11 @@ def load_turtlesim_interfaces(install: Path) -> None:
     site = next(prefix.glob('lib/python3*/site-packages'))
     if str(site) not in sys.path:
         sys.path.insert(0, str(site))
+
+
+def load_turtlesim_interfaces(install: Path) -> None:
+    """Make ``import turtlesim`` / ``turtlesim_headless`` work in this process."""
+    load_interfaces(install, 'turtlesim')
 
 
 class SimClient:

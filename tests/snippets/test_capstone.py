@@ -12,12 +12,10 @@ driving a turtlesim started elsewhere, and a bad ``robot_count`` refused.
 """
 from __future__ import annotations
 
-import ctypes
 import math
 import os
 import re
 import signal
-import sys
 import time
 from collections.abc import Iterator
 from pathlib import Path
@@ -29,7 +27,7 @@ from textbook import paths, workspace
 
 from .._polling import wait_for
 from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
-from ._turtlesim_client import SimClient, load_turtlesim_interfaces
+from ._turtlesim_client import SimClient, load_interfaces, load_turtlesim_interfaces
 from ._wiring import Wiring, wiring
 
 INSTALL = workspace.ensure_built()
@@ -37,26 +35,7 @@ if (INSTALL / 'turtlesim/share/turtlesim/HEADLESS').is_file():  # else a real on
     load_turtlesim_interfaces(INSTALL)
 
 
-def _load_interfaces(package: str) -> None:
-    """Make ``import <package>`` of the workspace work here (as for turtlesim)."""
-    lib = INSTALL / package / 'lib'
-    os.environ['LD_LIBRARY_PATH'] = os.pathsep.join(
-        filter(None, [str(lib), os.environ.get('LD_LIBRARY_PATH')]))
-    pending = sorted(lib.glob('lib*.so'))
-    for _ in range(len(pending)):  # in dependency order, whatever it is
-        for library in list(pending):
-            try:
-                ctypes.CDLL(str(library), mode=ctypes.RTLD_GLOBAL)
-                pending.remove(library)
-            except OSError:
-                continue
-    assert not pending, f'cannot load {[p.name for p in pending]} from {lib}'
-    site = str(next((INSTALL / package).glob('lib/python3*/site-packages')))
-    if site not in sys.path:
-        sys.path.insert(0, site)
-
-
-_load_interfaces('capstone_interfaces')
+load_interfaces(INSTALL, 'capstone_interfaces')
 
 from capstone_interfaces.srv import SetMode  # noqa: E402
 from turtlesim.msg import Pose  # noqa: E402
