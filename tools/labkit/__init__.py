@@ -31,7 +31,12 @@ ROS isolation (ROS_DOMAIN_ID, ROS_AUTOMATIC_DISCOVERY_RANGE) of the notebook,
 which the book's build sets for every lesson.
 """
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
-from labkit.workspace import WorkspaceNotReadyError, require_ros_python, require_workspace
+from labkit.workspace import (
+                              WorkspaceNotReadyError,
+                              require_ros_python,
+                              require_workspace,
+                              sourced_environment,
+)
 
 # Without a sourced ROS 2, `import labkit` says what to do, not "No module named 'rclpy'".
 require_ros_python()
@@ -45,5 +50,6 @@ from labkit.graph import GraphSnapshot, Topic, graph, read_parameters  # noqa: E
 __all__ = [
     'Background', 'GraphSnapshot', 'LabkitError', 'NodesNotFoundError', 'ProcessExitedError',
     'Topic', 'WorkspaceNotReadyError', 'draw_graph', 'exercises', 'graph', 'launch',
-    'read_parameters', 'require_workspace', 'run', 'start', 'start_launch',
+    'read_parameters', 'require_workspace', 'run', 'sourced_environment', 'start',
+    'start_launch',
 ]

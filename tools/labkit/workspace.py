@@ -12,6 +12,7 @@ from __future__ import annotations
 import importlib.util
 import os
 import shutil
+import subprocess
 from pathlib import Path
 
 from labkit.errors import LabkitError
@@ -130,3 +131,21 @@ def require_snippets(snippets: Path) -> Path:
             f'{SNIPPETS_VAR}=/path/to/ros2-launch-textbook/snippets before starting Jupyter.\n\n'
             + SETUP_STEPS)
     return snippets
+
+
+def sourced_environment(workspace: str | os.PathLike = '.',
+                        base: dict[str, str] | None = None) -> dict[str, str]:
+    """``base`` (default: this process's environment) after
+    ``source <workspace>/install/setup.bash``, done by bash itself as in a
+    student's terminal: pass it as ``env=`` to run what that workspace built."""
+    setup = Path(workspace) / 'install' / 'setup.bash'
+    env = dict(os.environ if base is None else base)
+    if not setup.is_file():
+        return env
+    out = subprocess.run(['bash', '-c', f'source "{setup}" >/dev/null && env -0'],
+                         env=env, check=True, capture_output=True, timeout=60).stdout
+    pairs = (entry.split(b'=', 1) for entry in out.split(b'\0') if b'=' in entry)
+    sourced = {key.decode(): value.decode() for key, value in pairs}
+    for noise in ('_', 'SHLVL', 'PWD', 'OLDPWD'):
+        sourced.pop(noise, None)
+    return sourced

@@ -2,10 +2,10 @@
 installed copy is current, and the environment of `source install/setup.bash`."""
 from __future__ import annotations
 
-import os
-import subprocess
 from dataclasses import dataclass
 from pathlib import Path
+
+from labkit.workspace import sourced_environment
 
 #: The package every exercise of the book is written in.
 PACKAGE = 'my_ws_exercises'
@@ -54,14 +54,4 @@ class StudentPackage:
     def environment(self, base: dict[str, str] | None = None) -> dict[str, str]:
         """`base` (default: this process's) after `source install/setup.bash`,
         done by bash itself, as in the student's terminal."""
-        setup = self.workspace / 'install' / 'setup.bash'
-        env = dict(os.environ if base is None else base)
-        if not setup.is_file():
-            return env
-        out = subprocess.run(['bash', '-c', f'source "{setup}" >/dev/null && env -0'],
-                             env=env, check=True, capture_output=True, timeout=60).stdout
-        pairs = (entry.split(b'=', 1) for entry in out.split(b'\0') if b'=' in entry)
-        sourced = {key.decode(): value.decode() for key, value in pairs}
-        for noise in ('_', 'SHLVL', 'PWD', 'OLDPWD'):
-            sourced.pop(noise, None)
-        return sourced
+        return sourced_environment(self.workspace, base)
