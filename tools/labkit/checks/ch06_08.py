@@ -9,11 +9,9 @@ so any correct way of writing it passes.
 """
 from __future__ import annotations
 
-import subprocess
-import sys
-from dataclasses import dataclass
-
+from labkit.grading import spec_run
 from labkit.grading.exercise import Exercise
+from labkit.grading.spec_run import SpecRun
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 
@@ -29,40 +27,15 @@ DEFECTS = (
      'data_processor averages 5 readings (window_size 5)',
      'give window_size its value 4, not only its type'),
 )
-SPEC_TIMEOUT = 120.0  # seconds; only stops a hung run, never a speed limit
-
-
-@dataclass(frozen=True)
-class SpecRun:
-    """One `python -m speccheck` run: its exit code and the lines it printed."""
-
-    command: str
-    returncode: int
-    stdout: str
-    stderr: str
-
-    @property
-    def failed(self) -> list[str]:
-        """The findings marked FAILED, without the marker."""
-        return [line.strip().removeprefix('FAILED').strip()
-                for line in self.stdout.splitlines() if line.startswith('  FAILED')]
-
-    @property
-    def error(self) -> str:
-        """speccheck's own error message (bad spec or launch file), exit code 2."""
-        return self.stderr.strip() or self.stdout.strip()
 
 
 def run_speccheck(package: StudentPackage, mode: str, launch_file: str) -> SpecRun:
     """`python -m speccheck MODE SPEC --launch my_robot_pkg FILE` in the student's workspace."""
     spec = package.source / SPEC
-    argv = [sys.executable, '-m', 'speccheck', mode, str(spec),
-            '--launch', BOOK_PACKAGE, launch_file]
     shown = (f'python -m speccheck {mode} {package.shown(spec)} '
              f'--launch {BOOK_PACKAGE} {launch_file}')
-    done = subprocess.run(argv, env=package.environment(), cwd=package.workspace,
-                          capture_output=True, text=True, timeout=SPEC_TIMEOUT, check=False)
-    return SpecRun(shown, done.returncode, done.stdout, done.stderr)
+    return spec_run.run_speccheck(package, mode, spec, ['--launch', BOOK_PACKAGE, launch_file],
+                                  shown)
 
 
 def _passes_the_system(verdict: Verdict, package: StudentPackage, mode: str) -> bool:

@@ -13,13 +13,11 @@ the first stage that fails ends the check, naming what it found.
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 import tempfile
 from dataclasses import dataclass
 from pathlib import Path
 
-from labkit.grading import requirements
+from labkit.grading import requirements, spec_run
 from labkit.grading.exercise import Exercise
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
@@ -29,7 +27,6 @@ BOOK_PACKAGE = 'dock_watch_pkg'
 SPEC = 'dock_watch_robot.spec.yaml'
 ROBOT, OTHER_ROBOT = 'scout', 'rover'
 WINDOW = '3'  # seconds the running check measures rates over
-SPEC_TIMEOUT = 180.0  # seconds; only stops a hung run, never a speed limit
 SHOWN_FINDINGS = 6
 
 
@@ -63,11 +60,6 @@ def book_spec(env: dict[str, str]) -> Path | None:
     return None
 
 
-def _failed(stdout: str) -> list[str]:
-    return [line.strip().removeprefix('FAILED').strip()
-            for line in stdout.splitlines() if line.startswith('  FAILED')]
-
-
 def _advice(stage: Stage, failed: list[str]) -> str:
     if stage.robot != ROBOT:
         return (f'with robot:={stage.robot} every node must run in /{stage.robot}/ '
@@ -85,23 +77,19 @@ def _advice(stage: Stage, failed: list[str]) -> str:
 
 def _run_stage(verdict: Verdict, package: StudentPackage, stage: Stage, spec: Path,
                env: dict[str, str]) -> bool:
-    argv = [sys.executable, '-m', 'speccheck', stage.mode, str(spec), '--launch',
-            package.name, Path(LAUNCH).name, *stage.arguments]
+    target = ['--launch', package.name, Path(LAUNCH).name, *stage.arguments]
     if stage.mode == 'live':
-        argv += ['--window', WINDOW]
-    done = subprocess.run(argv, env=env, cwd=package.workspace, capture_output=True,
-                          text=True, timeout=SPEC_TIMEOUT, check=False)
-    shown = f'`{stage.command(package)}`'
-    if done.returncode == 2:
-        error = done.stderr.strip() or done.stdout.strip()
-        return verdict.fail(f'{shown} could not run: {error}').passed
-    failed = _failed(done.stdout)
-    summary = done.stdout.strip().splitlines()[-1] if done.stdout.strip() else ''
-    findings = '\n      '.join(failed[:SHOWN_FINDINGS])
+        target += ['--window', WINDOW]
+    run = spec_run.run_speccheck(package, stage.mode, spec, target,
+                                 f'`{stage.command(package)}`', env)
+    if run.returncode == 2:
+        return verdict.fail(f'{run.command} could not run: {run.error}').passed
+    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(
-        done.returncode == 0 and not failed,
-        f'{shown}: {summary}',
-        f'{shown} finds requirements not met ({_advice(stage, failed)}):\n      {findings}')
+        run.returncode == 0 and not run.failed,
+        f'{run.command}: {run.summary}',
+        f'{run.command} finds requirements not met ({_advice(stage, run.failed)}):\n      '
+        f'{findings}')
 
 
 def check_dock_watch_robot(package: StudentPackage, verdict: Verdict) -> Verdict:

@@ -12,11 +12,11 @@ cannot see into, so every stage is a running check.
 from __future__ import annotations
 
 import re
-import subprocess
-import sys
 from dataclasses import dataclass
 
+from labkit.grading import spec_run
 from labkit.grading.exercise import SNIPPETS, Exercise
+from labkit.grading.spec_run import SpecRun
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 
@@ -24,7 +24,6 @@ SPEC = 'specs/ex71_third_robot.spec.yaml'
 BOOK_PACKAGE = 'capstone_bringup'
 SYSTEM = 'capstone.launch.py'
 DEFECT = SNIPPETS / 'ch07_defects' / 'turtle3_other_config.launch.py'
-SPEC_TIMEOUT = 180.0  # seconds; only stops a hung run, never a speed limit
 SHOWN_FINDINGS = 6
 #: a ROS name in a finding; the capstone's all start with a turtle or turtlesim
 ROS_NAME = re.compile(r'(?<![\w.])/[A-Za-z_][\w/]*')
@@ -53,33 +52,11 @@ DEFECTS = (
 )
 
 
-@dataclass(frozen=True)
-class SpecRun:
-    """One `python -m speccheck live` run: the command shown, exit code and output."""
-
-    command: str
-    returncode: int
-    stdout: str
-    stderr: str
-
-    @property
-    def failed(self) -> list[str]:
-        return [line.strip().removeprefix('FAILED').strip()
-                for line in self.stdout.splitlines() if line.startswith('  FAILED')]
-
-    @property
-    def error(self) -> str:
-        return self.stderr.strip() or self.stdout.strip()
-
-
 def run_speccheck(package: StudentPackage, system: System) -> SpecRun:
     """The student's spec against `system`, running, in their workspace's environment."""
     spec = package.source / SPEC
-    argv = [sys.executable, '-m', 'speccheck', 'live', str(spec), *system.launch]
     shown = f'python -m speccheck live {package.shown(spec)} {" ".join(system.launch)}'
-    done = subprocess.run(argv, env=package.environment(), cwd=package.workspace,
-                          capture_output=True, text=True, timeout=SPEC_TIMEOUT, check=False)
-    return SpecRun(shown, done.returncode, done.stdout, done.stderr)
+    return spec_run.run_speccheck(package, 'live', spec, list(system.launch), shown)
 
 
 def _why(failed: list[str]) -> str:
