@@ -30,6 +30,9 @@ class LaunchService:
     Shutdown event.  Whatever ends it, the Shutdown event is handled (so
     OnShutdown cleanups run) and all processes are stopped before run()
     returns.  An exception from an action ends the launch with exit code 1.
+    With `debug`, as Jazzy documents it, "asyncio and the logger are set up
+    for debug": the launch loggers log at DEBUG (an action's exception shows
+    its traceback) and the event loop runs in asyncio's debug mode.
     """
 
     def __init__(self, *, argv: Iterable[str] | None = None, noninteractive: bool = False,
@@ -73,7 +76,13 @@ class LaunchService:
         self.__context.emit_event_sync(IncludeLaunchDescription(launch_description))
 
     def shutdown(self, force_sync: bool = False) -> None:
-        """Ask the launch to shut down (thread-safe)."""
+        """Ask the launch to shut down (thread-safe).
+
+        The Shutdown event is queued and handled by the running loop.
+        `force_sync` is Jazzy's parameter; its effect is not described in the
+        documentation the clean room is written from (issue 13), so it
+        changes nothing here rather than guess at it.
+        """
         self.__context.emit_event_sync(
             Shutdown(reason='LaunchService.shutdown() called', due_to_sigint=False))
 
@@ -94,11 +103,15 @@ class LaunchService:
             raise RuntimeError('LaunchService is already running')
         self.__running = True
         loop = asyncio.get_running_loop()
+        loop_was_debug = loop.get_debug()
+        if self.__debug:
+            loop.set_debug(True)
         self.__context._set_asyncio_loop(loop)
         installed = self.__install_signal_handlers(loop)
         try:
             await self.__main_loop(shutdown_when_idle)
         finally:
+            loop.set_debug(loop_was_debug)
             for signum in installed:
                 loop.remove_signal_handler(signum)
             self.__context._close_spawner()

@@ -134,6 +134,17 @@ def test_exception_in_a_timer_stops_running_processes(run_launch):
     assert result.returncode == 1
 
 
+def test_debug_puts_the_event_loop_in_asyncio_debug_mode(run_launch):
+    seen = []
+
+    def record(context):
+        seen.append(context.asyncio_loop.get_debug())
+
+    run_launch([OpaqueFunction(function=record)], debug=True)
+    run_launch([OpaqueFunction(function=record)])
+    assert seen == [True, False]
+
+
 def test_functions_returning_non_entities_are_reported(run_launch):
     result = run_launch([OpaqueFunction(function=lambda context: True)])
     assert _error(result) == ("expected None, a launch entity or a list of launch entities, "

@@ -1,6 +1,7 @@
 """ExecuteProcess: names, command lines, output, respawn, log files."""
 from __future__ import annotations
 
+import inspect
 import subprocess
 import sys
 from pathlib import Path
@@ -78,6 +79,40 @@ def test_override_output_environment_variable(run_launch, monkeypatch):
     monkeypatch.setenv('OVERRIDE_LAUNCH_PROCESS_OUTPUT', 'both')
     result = run_launch([ExecuteProcess(cmd=['echo', 'hidden?'], name='quiet')])
     assert '[quiet-1] hidden?' in result.output.splitlines()
+
+
+def test_output_format_shapes_every_screen_line(run_launch):
+    script = 'import sys; print("first"); print("second"); sys.stderr.write("oops\\n")'
+    result = run_launch([
+        ExecuteProcess(cmd=[PY, '-c', script], name='fmt', output='both',
+                       output_format='{this.process_description.final_name} says: {line}'),
+        ExecuteProcess(cmd=['echo', 'bare'], name='plain', output='screen',
+                       output_format='<{line}>'),
+    ])
+    lines = result.output.splitlines()
+    for text in ('first', 'second', 'oops'):
+        assert f'fmt-1 says: {text}' in lines
+        assert f'[fmt-1] {text}' not in lines
+    assert '<bare>' in lines and '[plain-2] bare' not in lines
+    # the log file keeps the bare line under the process's name
+    launch_log = (Path(launch.logging.launch_config.log_dir) / 'launch.log').read_text()
+    assert '[fmt-1]: second' in launch_log and 'says:' not in launch_log
+
+
+def test_process_description_is_the_expanded_command(run_launch, tmp_path):
+    default = inspect.signature(ExecuteProcess).parameters['output_format'].default
+    assert default == '[{this.process_description.final_name}] {line}'  # Jazzy's, documented
+    proc = ExecuteProcess(cmd=['echo', LaunchConfiguration('word')], cwd=str(tmp_path),
+                          name=['dyn_', LaunchConfiguration('word')],
+                          additional_env={'CR_EXTRA': 'yes'}, output='screen')
+    description = proc.process_description
+    assert description.final_name is None and description.final_cmd is None
+    result = run_launch([proc], argv=('word:=hi',))
+    assert description.final_name == 'dyn_hi-1' == proc.name
+    assert description.final_cmd == ['echo', 'hi'] == result.started[0]['cmd']
+    assert description.final_cwd == str(tmp_path)
+    assert description.final_env['CR_EXTRA'] == 'yes'
+    assert '[dyn_hi-1] hi' in result.output.splitlines()
 
 
 def test_partial_last_line_and_emulate_tty(run_launch):

@@ -1,6 +1,8 @@
 """Where a process's output goes: lines to screen/log files, and an optional cache."""
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from ..logging import get_output_loggers
 
 
@@ -10,10 +12,13 @@ class ProcessOutput:
     Lines are written as soon as they are complete; a last line without a
     newline is written when the process exits (flush()).  With `cached`,
     everything is also kept for ExecuteProcess.get_stdout()/get_stderr().
+    `screen_line` turns a line into what the screen shows (ExecuteProcess's
+    `output_format`); without it the screen shows `[<process name>] <line>`.
     """
 
-    def __init__(self, process_name: str, output: str, cached: bool) -> None:
-        self.__writers = get_output_loggers(process_name, output)
+    def __init__(self, process_name: str, output: str, cached: bool, *,
+                 screen_line: Callable[[str], str] | None = None) -> None:
+        self.__writers = get_output_loggers(process_name, output, screen_line=screen_line)
         self.__buffers: dict[int, bytes] = {}
         self.__cached = cached
         self.__cache: dict[int, list[str]] = {1: [], 2: []}

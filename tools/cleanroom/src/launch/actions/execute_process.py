@@ -2,9 +2,6 @@
 from __future__ import annotations
 
 import asyncio
-import os
-import re
-import shlex
 import signal
 from collections.abc import Iterable, Mapping, Sequence
 from typing import (
@@ -13,6 +10,7 @@ from typing import (
 
 from ..action import Action
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
+from ..descriptions import Executable
 from ..event import Event
 from ..event_handler import BaseEventHandler, normalize_entities
 from ..event_handlers.on_process_exit import OnProcessExit
@@ -84,7 +82,10 @@ class ExecuteProcess(Action):
     The process is named `<name or basename of cmd[0]>-N`, N counting every
     process started by the LaunchService.  On shutdown it gets SIGINT, then
     SIGTERM after `sigterm_timeout` seconds, then SIGKILL after a further
-    `sigkill_timeout` seconds.
+    `sigkill_timeout` seconds.  With output 'screen' or 'both' each line the
+    process writes is printed as `output_format.format(line=..., this=<this
+    action>)`; the default `[{this.process_description.final_name}] {line}`
+    gives `[talker-1] ...`.  The log files keep the bare line.
     """
 
     def __init__(
@@ -110,14 +111,8 @@ class ExecuteProcess(Action):
         **kwargs: object,
     ) -> None:
         super().__init__(**kwargs)
-        if isinstance(cmd, (str, Substitution)):
-            cmd = [cmd]
-        self.__cmd: list[SubstitutionsList] = [_subs(token) for token in cmd]
-        self.__prefix = None if prefix is None else _subs(prefix)
-        self.__name = None if name is None else _subs(name)
-        self.__cwd = None if cwd is None else _subs(cwd)
-        self.__env = None if env is None else self.__pairs(env)
-        self.__additional_env = None if additional_env is None else self.__pairs(additional_env)
+        self.__description = Executable(cmd=cmd, prefix=prefix, name=name, cwd=cwd, env=env,
+                                        additional_env=additional_env)
         self.__shell = shell
         self.__sigterm_timeout = _subs(str(sigterm_timeout)) \
             if isinstance(sigterm_timeout, (int, float)) else _subs(sigterm_timeout)
@@ -134,10 +129,6 @@ class ExecuteProcess(Action):
         self.__respawn_max_retries = respawn_max_retries
         # state once executed
         self.__context: LaunchContext | None = None
-        self.__final_name: str | None = None
-        self.__final_cmd: list[str] | None = None
-        self.__final_cwd: str | None = None
-        self.__final_env: dict[str, str] | None = None
         self.__process: RunningProcess | None = None
         self.__future: asyncio.Future | None = None
         self.__events_handler: _ProcessEvents | None = None
@@ -149,42 +140,42 @@ class ExecuteProcess(Action):
         self.__output_handler: ProcessOutput | None = None
         self.__logger = None
 
-    @staticmethod
-    def __pairs(env: Mapping | Iterable[tuple]) -> list[tuple[SubstitutionsList,
-                                                                      SubstitutionsList]]:
-        items = env.items() if isinstance(env, Mapping) else env
-        return [(_subs(k), _subs(v)) for k, v in items]
-
     # --- public properties --------------------------------------------------
+    @property
+    def process_description(self) -> Executable:
+        """The command as given and, once started, as expanded (`final_name`, ...)."""
+        return self.__description
+
     @property
     def cmd(self) -> list[SubstitutionsList]:
         """The command; a mutable list of argument substitution lists."""
-        return self.__cmd
+        return self.__description.cmd
 
     @property
     def name(self) -> object:
         """The final name (e.g. 'talker-1') once started, else the given name."""
-        return self.__final_name if self.__final_name is not None else self.__name
+        final_name = self.__final_name
+        return final_name if final_name is not None else self.__description.name
 
     @property
     def prefix(self) -> SubstitutionsList | None:
         """The prefix command, as substitutions."""
-        return self.__prefix
+        return self.__description.prefix
 
     @property
     def cwd(self) -> SubstitutionsList | None:
         """The working directory, as substitutions."""
-        return self.__cwd
+        return self.__description.cwd
 
     @property
     def env(self) -> list[tuple[SubstitutionsList, SubstitutionsList]] | None:
         """The replacement environment, as substitution pairs."""
-        return self.__env
+        return self.__description.env
 
     @property
     def additional_env(self) -> list[tuple[SubstitutionsList, SubstitutionsList]] | None:
         """Variables added to the environment, as substitution pairs."""
-        return self.__additional_env
+        return self.__description.additional_env
 
     @property
     def shell(self) -> bool:
@@ -199,10 +190,11 @@ class ExecuteProcess(Action):
     @property
     def process_details(self) -> dict[str, object] | None:
         """name, cmd, cwd, env and pid of the started process (None before start)."""
-        if self.__final_name is None:
+        description = self.__description
+        if description.final_name is None:
             return None
-        return {'name': self.__final_name, 'cmd': self.__final_cmd, 'cwd': self.__final_cwd,
-                'env': self.__final_env,
+        return {'name': description.final_name, 'cmd': description.final_cmd,
+                'cwd': description.final_cwd, 'env': description.final_env,
                 'pid': self.__process.pid if self.__process is not None else None}
 
     @property
@@ -229,14 +221,14 @@ class ExecuteProcess(Action):
         def join(subs: SubstitutionsList) -> str:
             return ' + '.join(s.describe() for s in subs)
         cmd = ', '.join(join(c) for c in self._described_cmd())
-        cwd = None if self.__cwd is None else join(self.__cwd)
-        env = None if self.__env is None else \
-            '{' + ', '.join(f'{join(k)}: {join(v)}' for k, v in self.__env) + '}'
+        cwd = None if self.cwd is None else join(self.cwd)
+        env = None if self.env is None else \
+            '{' + ', '.join(f'{join(k)}: {join(v)}' for k, v in self.env) + '}'
         return f'ExecuteProcess(cmd=[{cmd}], cwd={cwd}, env={env}, shell={self.__shell})'
 
     def _described_cmd(self) -> list[SubstitutionsList]:
         """The command as described before execution (Node adds its name arguments)."""
-        return self.__cmd
+        return self.cmd
 
     def describe_conditional_sub_entities(
             self) -> list[tuple[str, Sequence[LaunchDescriptionEntity]]]:
@@ -248,6 +240,10 @@ class ExecuteProcess(Action):
     def get_asyncio_future(self) -> asyncio.Future | None:
         """Done when the process has exited for good (no respawn pending)."""
         return self.__future
+
+    @property
+    def __final_name(self) -> str | None:
+        return self.__description.final_name
 
     # --- execution ------------------------------------------------------------
     def execute(self, context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
@@ -269,50 +265,28 @@ class ExecuteProcess(Action):
         return None
 
     def __expand(self, context: LaunchContext) -> None:
-        cmd = [_perform(context, token) for token in self.__cmd]
-        if not cmd or not cmd[0]:
-            raise RuntimeError('ExecuteProcess: empty command')
-        executable = cmd[0]
-        cmd = self.__prefix_words(context, executable) + cmd
-        base = _perform(context, self.__name) if self.__name is not None \
-            else os.path.basename(executable)
-        self.__final_name = f'{base}-{context._allocate_process_number()}'
-        self.__final_cmd = cmd
-        self.__final_cwd = None if self.__cwd is None else _perform(context, self.__cwd)
-        if self.__env is None:
-            env = dict(context.environment)
-        else:
-            env = {_perform(context, k): _perform(context, v) for k, v in self.__env}
-        for k, v in self.__additional_env or []:
-            env[_perform(context, k)] = _perform(context, v)
-        self.__final_env = env
-        self.__output_handler = ProcessOutput(self.__final_name, _perform(context, self.__output),
-                                              self.__cached_output)
+        self.__description._expand(context)
+        self.__output_handler = ProcessOutput(
+            self.__final_name, _perform(context, self.__output),
+            self.__cached_output, screen_line=self.__screen_line)
 
-    def __prefix_words(self, context: LaunchContext, executable: str) -> list[str]:
-        if self.__prefix is not None:
-            return shlex.split(_perform(context, self.__prefix))
-        prefix = context.launch_configurations.get('launch-prefix', '')
-        if not prefix:
-            return []
-        pattern = context.launch_configurations.get('launch-prefix-filter')
-        if pattern and not re.search(pattern, os.path.basename(executable)):
-            return []
-        return shlex.split(str(prefix))
+    def __screen_line(self, line: str) -> str:
+        """A line of output as the screen shows it: `output_format` with `line` and `this`."""
+        return self.__output_format.format(line=line, this=self)
 
     def __start(self, context: LaunchContext) -> None:
-        assert self.__final_cmd is not None and self.__final_env is not None
+        assert self.__description.final_cmd is not None and self.__description.final_env is not None
         emulate_tty = self.__emulate_tty
         if 'emulate_tty' in context.launch_configurations:
             emulate_tty = _subs(str(context.launch_configurations['emulate_tty']))
         if self.__log_cmd:
-            self.__logger.info(f"process details: cmd='{' '.join(self.__final_cmd)}', "
-                               f"cwd='{self.__final_cwd}', "
-                               f'custom_env?={self.__env is not None}')
+            self.__logger.info(f"process details: cmd='{' '.join(self.__description.final_cmd)}', "
+                               f"cwd='{self.__description.final_cwd}', "
+                               f'custom_env?={self.env is not None}')
         self.__process = None  # until spawned; a shutdown meanwhile is applied afterwards
         process = RunningProcess(
-            context.asyncio_loop, self.__final_cmd, cwd=self.__final_cwd,
-            env=self.__final_env, shell=self.__shell,
+            context.asyncio_loop, self.__description.final_cmd, cwd=self.__description.final_cwd,
+            env=self.__description.final_env, shell=self.__shell,
             emulate_tty=_flag(context, emulate_tty),
             on_output=self.__on_output, on_exit=self.__on_process_exit)
         spawning = context._run_in_spawner(process.spawn)
@@ -333,8 +307,9 @@ class ExecuteProcess(Action):
             self.__stop(context, self.__stop_requested)
 
     def __event_fields(self) -> dict[str, object]:
-        return {'action': self, 'name': self.__final_name, 'cmd': self.__final_cmd,
-                'cwd': self.__final_cwd, 'env': self.__final_env,
+        description = self.__description
+        return {'action': self, 'name': description.final_name, 'cmd': description.final_cmd,
+                'cwd': description.final_cwd, 'env': description.final_env,
                 'pid': self.__process.pid if self.__process is not None else 0}
 
     # --- output ---------------------------------------------------------------
@@ -356,7 +331,7 @@ class ExecuteProcess(Action):
             self.__logger.info(f'process has finished cleanly [pid {pid}]')
         else:
             self.__logger.error(f'process has died [pid {pid}, exit code {returncode}, '
-                                f"cmd '{' '.join(self.__final_cmd)}'].")
+                                f"cmd '{' '.join(self.__description.final_cmd)}'].")
         context.emit_event_sync(ProcessExited(returncode=returncode, **self.__event_fields()))
         if self.__should_respawn(context):
             self.__respawn_count += 1

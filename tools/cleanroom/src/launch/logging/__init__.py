@@ -13,6 +13,7 @@ import os
 import socket
 import sys
 import threading
+from collections.abc import Callable
 from typing import TextIO
 
 __all__ = ['get_logger', 'get_output_loggers', 'launch_config', 'reset']
@@ -142,8 +143,9 @@ class _OutputLogger:
     """Writes process output lines to the screen and/or the log files."""
 
     def __init__(self, process_name: str, stream: str, to_screen: bool, to_log: bool,
-                 own_log: bool) -> None:
+                 own_log: bool, screen_line: Callable[[str], str] | None = None) -> None:
         self.process_name = process_name
+        self.screen_line = screen_line or (lambda text: f'[{process_name}] {text}')
         self.stream = stream
         self.to_screen = to_screen
         self.to_log = to_log
@@ -153,7 +155,7 @@ class _OutputLogger:
         """Emit one line of output (without its newline)."""
         if self.to_screen:
             with launch_config._lock:
-                sys.stdout.write(f'[{self.process_name}] {text}\n')
+                sys.stdout.write(self.screen_line(text) + '\n')
                 sys.stdout.flush()
         if self.to_log:
             launch_config.file_handler().handle(logging.LogRecord(
@@ -176,20 +178,24 @@ _OUTPUT_MODES = {
 }
 
 
-def get_output_loggers(process_name: str, output: str) -> tuple[_OutputLogger, _OutputLogger]:
+def get_output_loggers(process_name: str, output: str, *,
+                       screen_line: Callable[[str], str] | None = None,
+                       ) -> tuple[_OutputLogger, _OutputLogger]:
     """Return (stdout, stderr) writers for a process's `output` setting.
 
     'screen' prints both streams; 'log' (the default) writes both to launch.log
     and also prints stderr; 'both' does both; 'own_log' writes per-process
     files only.  OVERRIDE_LAUNCH_PROCESS_OUTPUT (set by `ros2 launch -a`)
-    overrides the setting of every process.
+    overrides the setting of every process.  `screen_line` formats a line for
+    the screen (ExecuteProcess's `output_format`; default `[name] line`); the
+    log files keep the bare line under the process's name.
     """
     output = os.environ.get('OVERRIDE_LAUNCH_PROCESS_OUTPUT') or output
     if output not in _OUTPUT_MODES:
         raise ValueError(f"output '{output}' is not one of {sorted(_OUTPUT_MODES)}")
     out_mode, err_mode = _OUTPUT_MODES[output]
-    return (_OutputLogger(process_name, 'stdout', *out_mode),
-            _OutputLogger(process_name, 'stderr', *err_mode))
+    return (_OutputLogger(process_name, 'stdout', *out_mode, screen_line=screen_line),
+            _OutputLogger(process_name, 'stderr', *err_mode, screen_line=screen_line))
 
 
 def reset() -> None:
