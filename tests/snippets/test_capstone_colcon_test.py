@@ -1,0 +1,114 @@
+"""The capstone's own integration tests (capstone_bringup/test/, lesson 7.3) run
+under `colcon test` as CI and a student run them, and can fail.
+
+A scratch workspace holds a copy of capstone_bringup (its dependencies come
+from the book's workspace underneath), built and tested with `colcon test
+--packages-select capstone_bringup`, then read with `colcon test-result
+--verbose` and the package's pytest.xml: on the package as shipped, every
+test passes; with snippets/ch07_defects/robot_monitor_not_critical.launch.py
+planted as the copy's robot.launch.py (the safety monitor's exit no longer
+shuts the launch down), exactly the launch_testing test fails, and its
+report says what did not happen.  Every run is marked in its environment,
+and none of its processes may outlive it.
+"""
+from __future__ import annotations
+
+import re
+import shutil
+import subprocess
+import uuid
+from collections.abc import Iterator
+from pathlib import Path
+
+import psutil
+import pytest
+from labkit.grading.student_package import StudentPackage
+from textbook import paths
+
+from ._launch_log import DDS_SHUTDOWN_HANG
+
+PACKAGE = 'capstone_bringup'
+SOURCE = paths.SNIPPETS / PACKAGE
+NOT_CRITICAL = paths.SNIPPETS / 'ch07_defects' / 'robot_monitor_not_critical.launch.py'
+HANG_GUARD = 900  # seconds; only stops a hung run, never a speed limit
+MARK = 'CAPSTONE_COLCON_TEST_RUN'
+LAUNCH_TESTING = 'test_capstone_launch'  # launch_testing reports a file as one test
+PYTEST_TESTS = {'test_safety_monitor_stops_the_turtle_before_the_wall',
+                'test_killed_wall_sensor_comes_back_while_the_robot_holds_still'}
+ALL_TESTS = {LAUNCH_TESTING, *PYTEST_TESTS}
+
+pytestmark = DDS_SHUTDOWN_HANG  # each run stops the capstone's nodes at once, three times
+
+
+def _left_behind(token: str) -> list[psutil.Process]:
+    found = []
+    for proc in psutil.process_iter():
+        try:
+            if proc.environ().get(MARK) == token and proc.status() != psutil.STATUS_ZOMBIE:
+                found.append(proc)
+        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
+            continue
+    return found
+
+
+@pytest.fixture
+def run_env(ros_env: dict[str, str]) -> Iterator[dict[str, str]]:
+    """The student's terminal, marked; fails the test if a marked process survives it."""
+    token = uuid.uuid4().hex
+    yield dict(ros_env, **{MARK: token})
+    leftovers = _left_behind(token)
+    for proc in leftovers:
+        proc.kill()
+    assert not leftovers, f'processes left behind: {leftovers}'
+
+
+def _run(argv: list[str], env: dict[str, str], cwd: Path) -> subprocess.CompletedProcess[str]:
+    return subprocess.run(argv, env=env, cwd=cwd, capture_output=True, text=True,
+                          stdin=subprocess.DEVNULL, timeout=HANG_GUARD, check=False)
+
+
+def _workspace(root: Path, env: dict[str, str], robot_launch: Path | None = None
+               ) -> dict[str, str]:
+    """A workspace with a copy of the package (robot.launch.py replaced if asked), built."""
+    package = root / 'src' / PACKAGE
+    shutil.copytree(SOURCE, package, ignore=shutil.ignore_patterns('__pycache__'))
+    if robot_launch is not None:
+        shutil.copyfile(robot_launch, package / 'launch' / 'robot.launch.py')
+    build = _run([paths.executable('colcon'), 'build'], env, root)
+    assert build.returncode == 0, build.stdout + build.stderr
+    return StudentPackage(root, PACKAGE).environment(env)
+
+
+def _colcon_test(root: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess[str],
+                                                           dict[str, str]]:
+    """`colcon test`, then `colcon test-result --verbose`; its result and each test's outcome."""
+    tested = _run([paths.executable('colcon'), 'test', '--packages-select', PACKAGE], env, root)
+    assert tested.returncode == 0, tested.stdout + tested.stderr  # failing tests are not errors
+    result = _run([paths.executable('colcon'), 'test-result', '--verbose'], env, root)
+    report = root / 'build' / PACKAGE / 'pytest.xml'
+    outcomes = {}
+    for case in re.finditer(r'<testcase [^>]*name="(\w+)"[^>]*?(/>|>(.*?)</testcase>)',
+                            report.read_text(), re.S):
+        failed = case.group(3) and re.search(r'<(failure|error)\b', case.group(3))
+        outcomes[case.group(1)] = 'failed' if failed else 'passed'
+    return result, outcomes
+
+
+def test_colcon_test_passes_on_the_capstone(tmp_path, run_env):
+    env = _workspace(tmp_path, run_env)
+    result, outcomes = _colcon_test(tmp_path, env)
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert outcomes == dict.fromkeys(ALL_TESTS, 'passed'), (outcomes, result.stdout)
+    assert 'Summary: 3 tests, 0 errors, 0 failures, 0 skipped' in result.stdout, result.stdout
+
+
+def test_colcon_test_fails_when_the_safety_monitor_is_not_critical(tmp_path, run_env):
+    env = _workspace(tmp_path, run_env, robot_launch=NOT_CRITICAL)
+    result, outcomes = _colcon_test(tmp_path, env)
+    assert result.returncode != 0, result.stdout
+    assert outcomes == {**dict.fromkeys(PYTEST_TESTS, 'passed'), LAUNCH_TESTING: 'failed'}, \
+        (outcomes, result.stdout)
+    assert 'Summary: 3 tests, 0 errors, 1 failure, 0 skipped' in result.stdout, result.stdout
+    # the report a student reads names the active test that waited in vain ...
+    assert 'test_4_fault_safety_monitor_killed' in result.stdout, result.stdout
+    assert 'the launch did not shut down' in result.stdout, result.stdout
