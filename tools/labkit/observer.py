@@ -53,19 +53,24 @@ class Observer:
         self.context.try_shutdown()
 
     def call(self, srv_type: Any, service: str, request: Any, timeout: float = 5.0) -> Any:
-        """Call a service once; returns the response or None if nobody answered."""
+        """Call a service once; returns the response or None if nobody answered.
+
+        Nothing spins the observer's node in the background, so rclpy's
+        `Client.call()` (which waits for another thread's executor) would only
+        time out: the call is spun here, on a temporary executor, with rclpy's
+        own helpers.  The clean room's `ros2` has the same few lines
+        (ros2_cleanroom.cli_node.call_service) on purpose (issue 13): labkit
+        must run on a real ROS 2, where the clean room is not installed, and
+        the clean room may not import labkit.
+        """
         client = self.node.create_client(srv_type, service)
         try:
             if not client.wait_for_service(timeout_sec=timeout):
                 return None
             future = client.call_async(request)
-            executor = SingleThreadedExecutor(context=self.context)
-            executor.add_node(self.node)
-            try:
-                executor.spin_until_future_complete(future, timeout_sec=timeout)
-            finally:
-                executor.remove_node(self.node)
-                executor.shutdown()
+            with SingleThreadedExecutor(context=self.context) as executor:
+                rclpy.spin_until_future_complete(self.node, future, executor=executor,
+                                                 timeout_sec=timeout)
             return future.result() if future.done() else None
         finally:
             self.node.destroy_client(client)

@@ -142,19 +142,24 @@ def wait_for_node(node: Node, target: str, include_hidden: bool = False,
 
 def call_service(node: Node, srv_type: Any, name: str, request: Any,
                  timeout: float = 5.0) -> Any | None:
-    """Call a service once and return its response, or None if nobody answered."""
+    """Call a service once and return its response, or None if nobody answered.
+
+    Nothing spins this node in the background, so rclpy's `Client.call()`
+    (which waits for another thread's executor) would only time out: the
+    call is spun here, on a temporary executor, with rclpy's own helpers.
+    labkit's Observer.call is the same few lines on purpose (issue 13): labkit
+    runs on a real ROS 2, where the clean room is not installed, and the clean
+    room may not import labkit, so the only home both could share is a third
+    distribution, which would cost more than these lines.
+    """
     client = node.create_client(srv_type, name)
     try:
         if not client.wait_for_service(timeout_sec=timeout):
             return None
         future = client.call_async(request)
-        executor = SingleThreadedExecutor(context=node.context)
-        executor.add_node(node)
-        try:
-            executor.spin_until_future_complete(future, timeout_sec=timeout)
-        finally:
-            executor.remove_node(node)
-            executor.shutdown()
+        with SingleThreadedExecutor(context=node.context) as executor:
+            rclpy.spin_until_future_complete(node, future, executor=executor,
+                                             timeout_sec=timeout)
         return future.result() if future.done() else None
     finally:
         node.destroy_client(client)
