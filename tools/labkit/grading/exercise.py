@@ -3,7 +3,7 @@ snippets/, its catalogue of wrong answers, and the check that grades it."""
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from labkit.grading.student_package import PACKAGE, StudentPackage
@@ -13,6 +13,15 @@ from labkit.workspace import book_snippets
 #: The repository's snippets/, or a copy of it (a pip-installed labkit, see book_snippets).
 SNIPPETS = book_snippets()
 STARTERS = SNIPPETS / 'starters' / PACKAGE
+
+
+@dataclass
+class ExerciseVerdict(Verdict):
+    """The verdict of one exercise, knowing the exercise's files: a check's
+    `requirements.files_installed(verdict, package)` reads them from here, so
+    they are listed once, in the Exercise."""
+
+    files: tuple[str, ...] = field(default=())
 
 
 @dataclass(frozen=True)
@@ -29,8 +38,8 @@ class Exercise:
     solutions: str = 'ch06_solutions'
 
     def grade(self, package: StudentPackage) -> Verdict:
-        """Run the check on `package`; its verdict carries the exercise's title."""
-        return self.check(package, Verdict(self.title))
+        """Run the check on `package`; its verdict carries the exercise's title and files."""
+        return self.check(package, ExerciseVerdict(self.title, files=self.files))
 
     def starter(self, relative: str) -> Path:
         return STARTERS / relative

@@ -2,13 +2,24 @@
 that says what is wrong and what to do about it."""
 from __future__ import annotations
 
+from labkit.grading.exercise import ExerciseVerdict
 from labkit.grading.launch_probe import LaunchProbe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 
 
-def files_installed(verdict: Verdict, package: StudentPackage, files: tuple[str, ...]) -> bool:
-    """Every file exists in src/ and its installed copy is current."""
+def files_installed(verdict: Verdict, package: StudentPackage,
+                    files: tuple[str, ...] | None = None) -> bool:
+    """Every file exists in src/ and its installed copy is current.
+
+    Without `files`, the files of the exercise being graded (Exercise.files,
+    carried by its ExerciseVerdict); give them only for a check that also
+    needs another exercise's file.
+    """
+    if files is None:
+        if not isinstance(verdict, ExerciseVerdict):
+            raise TypeError('files_installed() needs `files` outside Exercise.grade()')
+        files = verdict.files
     ok = True
     for relative in files:
         problem = package.installed_problem(relative)
