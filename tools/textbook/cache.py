@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import copy
 import fcntl
+import functools
 import importlib.util
 import os
 import re
@@ -34,11 +35,24 @@ _EXECUTION_MODULES = ['environment.py', 'execute.py', 'includes.py', 'isolation.
 
 def tools_fingerprint() -> str:
     """Changes when the machinery that runs lessons changes."""
+    return hash_text(__version__, tools_sources_hash(), ros_stack())
+
+
+@functools.cache
+def tools_sources_hash() -> str:
+    """The hash of the execution tools' files, read once per process.
+
+    Every lesson key needs it and reading labkit and the clean room takes
+    seconds, while nothing edits tools/ during a build or a test run.  A
+    process that outlives such an edit (`textbook serve`, which watches only
+    lessons/ and snippets/) keeps the old hash until it restarts; a test that
+    edits these files calls `tools_sources_hash.cache_clear()`.
+    """
     here = Path(__file__).parent
     sources = [here / name for name in _EXECUTION_MODULES]
     sources += [paths.TOOLS / 'labkit', paths.TOOLS / 'cleanroom' / 'src',
                 paths.ROOT / 'requirements' / 'lock.txt']
-    return hash_text(__version__, hash_paths(sources, base=paths.ROOT), ros_stack())
+    return hash_paths(sources, base=paths.ROOT)
 
 
 def ros_stack() -> str:
