@@ -10,8 +10,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-from rcl_interfaces.msg import ParameterType, ParameterValue
 from rcl_interfaces.srv import GetParameters, ListParameters
+from rclpy.parameter import parameter_value_to_python
 
 from labkit import observer
 from labkit.errors import LabkitError
@@ -117,6 +117,9 @@ def graph(include_hidden: bool = False, include_default_topics: bool = False) ->
 def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
     """Parameters of `node` (e.g. '/robot_controller'), sorted by name.
 
+    Values as rclpy's `parameter_value_to_python` gives them (arrays as lists,
+    unset as None), so they compare with what a node declared.
+
     Raises LabkitError when the node does not answer its parameter services.
     """
     target = node if node.startswith('/') else '/' + node
@@ -131,30 +134,5 @@ def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
                       GetParameters.Request(names=names), timeout)
     if values is None:
         raise LabkitError(f'{target} did not answer on {target}/get_parameters')
-    return {name: parameter_value(value) for name, value in zip(names, values.values,
-                                                                 strict=True)}
-
-
-_SCALAR_FIELDS = {
-    ParameterType.PARAMETER_BOOL: 'bool_value',
-    ParameterType.PARAMETER_INTEGER: 'integer_value',
-    ParameterType.PARAMETER_DOUBLE: 'double_value',
-    ParameterType.PARAMETER_STRING: 'string_value',
-}
-_ARRAY_FIELDS = {
-    ParameterType.PARAMETER_BYTE_ARRAY: 'byte_array_value',
-    ParameterType.PARAMETER_BOOL_ARRAY: 'bool_array_value',
-    ParameterType.PARAMETER_INTEGER_ARRAY: 'integer_array_value',
-    ParameterType.PARAMETER_DOUBLE_ARRAY: 'double_array_value',
-    ParameterType.PARAMETER_STRING_ARRAY: 'string_array_value',
-}
-
-
-def parameter_value(value: ParameterValue) -> Any:
-    """rcl_interfaces ParameterValue -> plain Python (arrays as lists, unset as None)."""
-    if value.type in _SCALAR_FIELDS:
-        return getattr(value, _SCALAR_FIELDS[value.type])
-    if value.type in _ARRAY_FIELDS:
-        return [item.item() if hasattr(item, 'item') else item
-                for item in getattr(value, _ARRAY_FIELDS[value.type])]
-    return None
+    return {name: parameter_value_to_python(value)
+            for name, value in zip(names, values.values, strict=True)}

@@ -9,6 +9,7 @@ from typing import Any
 
 import yaml
 from rcl_interfaces.msg import ParameterType, ParameterValue
+from rclpy.parameter import parameter_value_to_python
 
 # ParameterType constant -> (ParameterValue field, word used by `ros2 param get`)
 _FIELDS = {
@@ -43,16 +44,18 @@ def type_name(value: ParameterValue) -> str:
 
 
 def to_python(value: ParameterValue) -> Any:
-    """The plain Python value (arrays as lists); None when the parameter is not set."""
+    """The plain Python value (arrays as lists); None when the parameter is not set.
+
+    rclpy's conversion, but a byte array as its numbers: rclpy gives one-byte
+    `bytes`, which `ros2 param get` would print as b'..' and the dump as !!binary.
+    A type outside ParameterType counts as not set instead of raising.
+    """
     if value.type not in _FIELDS:
         return None
-    data = getattr(value, _FIELDS[value.type][0])
+    python = parameter_value_to_python(value)
     if value.type == ParameterType.PARAMETER_BYTE_ARRAY:
-        return [b if isinstance(b, int) else ord(b) for b in data]
-    if value.type in (ParameterType.PARAMETER_BOOL_ARRAY, ParameterType.PARAMETER_INTEGER_ARRAY,
-                      ParameterType.PARAMETER_DOUBLE_ARRAY, ParameterType.PARAMETER_STRING_ARRAY):
-        return [item.item() if hasattr(item, 'item') else item for item in data]
-    return data
+        return [item if isinstance(item, int) else ord(item) for item in python]
+    return python
 
 
 def describe(value: ParameterValue, hide_type: bool = False) -> str | None:
