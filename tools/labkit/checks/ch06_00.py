@@ -52,7 +52,7 @@ def _two_nodes_talk(verdict: Verdict, run: LaunchProbe) -> bool:
 
 def check_talk(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The two terminals of lesson 6.0 as one launch file."""
-    if requirements.files_installed(verdict, package, ('launch/' + TALK_FILE,)):
+    if requirements.files_installed(verdict, package):
         _two_nodes_talk(verdict, probe(package, TALK_FILE, (SENSOR, PROCESSOR)))
     return verdict
 
@@ -75,7 +75,7 @@ def _shown(value: Any) -> str:
 
 def check_fast_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The sensor got publish_rate 5.0 and started at 5 Hz; the processor is unchanged."""
-    if not requirements.files_installed(verdict, package, ('launch/' + FAST_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, FAST_FILE, (SENSOR, PROCESSOR), inspect=_read_both)
     if not _two_nodes_talk(verdict, run):

@@ -21,7 +21,7 @@ def _start_it(node: str, executable: str) -> str:
 
 def check_full_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Three nodes, and the data flows sensor -> processor -> controller -> /cmd_vel."""
-    if not requirements.files_installed(verdict, package, ('launch/' + PIPELINE_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, PIPELINE_FILE, PIPELINE)
     if not requirements.launch_ran(verdict, run):
@@ -41,7 +41,7 @@ def check_full_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
 
 def check_front_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The program sensor_publisher runs once, as the node /front_sensor, feeding the processor."""
-    if not requirements.files_installed(verdict, package, ('launch/' + FRONT_SENSOR_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, FRONT_SENSOR_FILE, ('/front_sensor', '/data_processor'))
     if not requirements.launch_ran(verdict, run):

@@ -125,7 +125,7 @@ def started_rate(run: LaunchProbe) -> str | None:
 
 def check_turtle(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Turtle's values reach the controller with the right types; the rest stay defaults."""
-    if not requirements.files_installed(verdict, package, (TURTLE_YAML, 'launch/' + TURTLE_FILE)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, TURTLE_FILE, (CONTROLLER,), inspect=_read_controller)
     if not controller_started(verdict, run, TURTLE_FILE) or \
@@ -176,7 +176,7 @@ def check_turtle_demo(package: StudentPackage, verdict: Verdict) -> Verdict:
 
 def check_scout_5hz(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Scout's values from robot_params.yaml, with the control loop started at 5 Hz."""
-    if not requirements.files_installed(verdict, package, ('launch/' + SCOUT_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, SCOUT_FILE, (CONTROLLER,), inspect=_read_controller)
     if not controller_started(verdict, run, SCOUT_FILE) or \

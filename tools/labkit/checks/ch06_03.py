@@ -205,7 +205,7 @@ def _invalid_choice_refused(verdict: Verdict, package: StudentPackage) -> None:
 
 def check_rover(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Three arguments with defaults, used by the nodes, a condition and a refused choice."""
-    if not requirements.files_installed(verdict, package, ('launch/' + ROVER_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     _arguments_listed(verdict, package)
     if _defaults(verdict, package):
@@ -229,7 +229,7 @@ def _robot_names(verdict: Verdict, run: LaunchProbe, second: str, source: str,
 
 def check_bringup_scoped(package: StudentPackage, verdict: Verdict) -> Verdict:
     """robot1 is alpha, robot2 keeps the default (or the command line's) robot_name."""
-    if not requirements.files_installed(verdict, package, ('launch/' + SCOPED_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, SCOPED_FILE, ROBOTS, inspect=parameters_of(ROBOTS))
     if not requirements.launch_ran(verdict, run):

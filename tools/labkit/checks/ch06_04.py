@@ -15,7 +15,7 @@ from pathlib import Path
 
 from labkit.checks.ch06_03 import CONTROLLER, parameter_is, parameters_of, show_args
 from labkit.grading import requirements
-from labkit.grading.exercise import Exercise
+from labkit.grading.exercise import Exercise, ExerciseVerdict
 from labkit.grading.launch_probe import LaunchProbe, probe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
@@ -32,10 +32,12 @@ OVERRIDE_YAML = (f'robot_controller:\n  ros__parameters:\n    robot_name: "{OVER
                  '    max_linear_speed: 0.7\n')
 
 
-def files_installed(verdict: Verdict, package: StudentPackage, files: tuple[str, ...]) -> bool:
-    """Each file is in src/ and installed, current; a missing install names data_files."""
+def files_installed(verdict: ExerciseVerdict, package: StudentPackage) -> bool:
+    """Each of the exercise's files is in src/ and installed, current; a missing
+    install names data_files (this lesson teaches them, so its checks say more
+    than requirements.files_installed)."""
     ok = True
-    for relative in files:
+    for relative in verdict.files:
         installed = package.share / relative
         problem = package.installed_problem(relative)
         if problem and (package.source / relative).is_file() and not installed.is_file():
@@ -86,7 +88,7 @@ def parameter_files_found(verdict: Verdict, package: StudentPackage, run: Launch
 
 def check_fast_robot(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The installed parameter file reaches the controller through FindPackageShare."""
-    if not files_installed(verdict, package, ('launch/' + FAST_FILE, FAST_CONFIG)):
+    if not files_installed(verdict, package):
         return verdict
     run = probe(package, FAST_FILE, (CONTROLLER,), inspect=parameters_of((CONTROLLER,)))
     if not requirements.launch_ran(verdict, run):
@@ -107,7 +109,7 @@ def check_fast_robot(package: StudentPackage, verdict: Verdict) -> Verdict:
 
 def check_params_file(package: StudentPackage, verdict: Verdict) -> Verdict:
     """params_file defaults to the installed slow configuration and can be overridden."""
-    if not files_installed(verdict, package, ('launch/' + PARAMS_FILE, SLOW_CONFIG)):
+    if not files_installed(verdict, package):
         return verdict
     shown, _ = show_args(package, PARAMS_FILE)
     argument = shown.get('params_file')

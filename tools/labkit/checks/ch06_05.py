@@ -72,7 +72,7 @@ def _processor_reads_merged(verdict: Verdict, run: LaunchProbe) -> None:
 
 def check_two_sensors(package: StudentPackage, verdict: Verdict) -> Verdict:
     """/front and /rear sensors both publish /ranges, which /data_processor reads."""
-    if not requirements.files_installed(verdict, package, ('launch/' + TWO_SENSORS_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, TWO_SENSORS_FILE, (*SENSORS.values(), PROCESSOR))
     if not requirements.launch_ran(verdict, run):
@@ -156,8 +156,7 @@ def _settings(verdict: Verdict, run: LaunchProbe) -> None:
 
 def check_two_robots(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Two robots in /robot1 and /robot2, kept apart, configured by one parameter file."""
-    if not requirements.files_installed(verdict, package, ('launch/' + TWO_ROBOTS_FILE,
-                                                           'config/' + ROBOTS_CONFIG)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     controllers = tuple(f'/{namespace}/robot_controller' for namespace in ROBOT_NAMES)
     expected = tuple(node for namespace in ROBOT_NAMES for node in _robot_nodes(namespace))

@@ -161,7 +161,7 @@ def _shutdown_after_death(verdict: Verdict, trial: SensorTrial) -> None:
 
 def check_critical_sensor(package: StudentPackage, verdict: Verdict) -> Verdict:
     """data_processor starts after the sensor's ready line; the sensor's death ends the launch."""
-    if not requirements.files_installed(verdict, package, ('launch/' + CRITICAL_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     trial = run_trial(package)
     if not _sensor_started(verdict, trial):

@@ -43,7 +43,7 @@ def _in_graph_or_elsewhere(verdict: Verdict, run: LaunchProbe, node: str) -> Non
 
 def check_fix_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Both nodes in the launch's domain, /distance linking them, readings filtered."""
-    if not requirements.files_installed(verdict, package, ('launch/' + PIPELINE_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, PIPELINE_FILE, NODES, timeout=PROBE_TIMEOUT,
                 inspect=_filtered_readings)

@@ -137,7 +137,7 @@ def _governor_has_limit(verdict: Verdict, run: LimitRun) -> bool:
 
 def check_speed_limit(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The governor gets the limit, started after the publish; a late subscriber gets it too."""
-    if not requirements.files_installed(verdict, package, ('launch/' + LIMIT_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = run_limits(package)
     deaths = _deaths(run.lines)

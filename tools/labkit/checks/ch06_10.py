@@ -134,7 +134,7 @@ def _results(verdict: Verdict, run: LaunchProbe, detections: Rate) -> None:
 
 def check_light_pipeline(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Results at 5 Hz and reported, within the budget of rate, size and processes."""
-    if not requirements.files_installed(verdict, package, ('launch/' + PIPELINE_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     run = probe(package, PIPELINE_FILE, (CAMERA, DETECTOR, MONITOR), inspect=_observe)
     if not requirements.launch_ran(verdict, run):

@@ -162,7 +162,7 @@ def _probe_original(package: StudentPackage, arguments: dict[str, str]) -> Launc
 
 def check_rover(package: StudentPackage, verdict: Verdict) -> Verdict:
     """ex611_rover.launch.xml starts the same system as twin_rover.launch.py."""
-    if not requirements.files_installed(verdict, package, ('launch/' + TWIN_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     original_arguments = show_args(StudentPackage(package.workspace, ORIGINAL_PACKAGE),
                                    ORIGINAL_FILE)[0]

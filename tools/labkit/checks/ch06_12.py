@@ -108,7 +108,7 @@ def _judge_run(verdict: Verdict, package: StudentPackage, arguments: dict[str, s
 
 def check_fleet(package: StudentPackage, verdict: Verdict) -> Verdict:
     """robot_count scouts, each robot.launch.py in its own namespace, arguments passed down."""
-    if not requirements.files_installed(verdict, package, ('launch/' + FLEET_FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     for arguments, count in RUNS:
         if not _judge_run(verdict, package, arguments, count):

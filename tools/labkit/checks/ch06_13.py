@@ -92,7 +92,7 @@ def _judge(verdict: Verdict, package: StudentPackage, robot: str, arguments: dic
 
 def check_warehouse(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The warehouse's values win over the robot's, for scout and for ranger."""
-    if not requirements.files_installed(verdict, package, ('launch/' + LAUNCH_FILE, SITE_FILE)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     if _judge(verdict, package, 'scout', {}):
         _judge(verdict, package, 'ranger', {'robot': 'ranger'})

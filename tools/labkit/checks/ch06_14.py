@@ -94,7 +94,7 @@ def _run_stage(verdict: Verdict, package: StudentPackage, stage: Stage, spec: Pa
 
 def check_dock_watch_robot(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The student's launch file meets version 3 of the spec, for robot scout and rover."""
-    if not requirements.files_installed(verdict, package, (LAUNCH,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     env = package.environment()
     spec = book_spec(env)
