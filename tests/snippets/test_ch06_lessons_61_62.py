@@ -20,10 +20,9 @@ from typing import Any
 
 import pytest
 import rclpy
-from labkit import checks
+from labkit import checks, observer
 from rcl_interfaces.srv import GetParameters
 from rclpy.context import Context
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node as RclpyNode
 from rclpy.parameter import parameter_value_to_python
 from textbook import paths
@@ -159,22 +158,14 @@ def _wait_for_nodes(graph: RclpyNode, names: set[str], proc: subprocess.Popen) -
     return names & seen
 
 
-def _get_parameters(graph: RclpyNode, node: str, names: list[str]) -> dict[str, Any]:
-    """What ``ros2 param get NODE NAME`` asks: the node's get_parameters service."""
-    client = graph.create_client(GetParameters, f'{node}/get_parameters')
-    try:
-        assert client.wait_for_service(timeout_sec=HANG_GUARD), f'{node}: no parameter service'
-        future = client.call_async(GetParameters.Request(names=names))
-        executor = SingleThreadedExecutor(context=graph.context)
-        executor.add_node(graph)
-        executor.spin_until_future_complete(future, timeout_sec=HANG_GUARD)
-        executor.remove_node(graph)
-        executor.shutdown()
-        assert future.done(), f'{node}: get_parameters got no answer'
-        values = [parameter_value_to_python(v) for v in future.result().values]
-        return dict(zip(names, values, strict=True))
-    finally:
-        graph.destroy_client(client)
+def _get_parameters(node: str, names: list[str]) -> dict[str, Any]:
+    """What ``ros2 param get NODE NAME`` asks: the node's get_parameters service
+    (called through labkit's observer, the tests' one service-call helper)."""
+    response = observer.observer().call(GetParameters, f'{node}/get_parameters',
+                                        GetParameters.Request(names=names), HANG_GUARD)
+    assert response is not None, f'{node}: get_parameters did not answer'
+    values = [parameter_value_to_python(v) for v in response.values]
+    return dict(zip(names, values, strict=True))
 
 
 def _normalized(value: Any) -> Any:
@@ -185,7 +176,7 @@ def _normalized(value: Any) -> Any:
 def test_launch_starts_nodes_with_their_parameters(case: Case, ros_env, graph):
     with launched(case, ros_env) as proc:
         up = _wait_for_nodes(graph, set(case.nodes), proc)
-        got = {node: _get_parameters(graph, node, list(expected)) if expected else {}
+        got = {node: _get_parameters(node, list(expected)) if expected else {}
                for node, expected in case.nodes.items() if node in up}
     assert up == set(case.nodes), f'nodes missing: {set(case.nodes) - up}\n{proc.output}'
     got = {node: {k: _normalized(v) for k, v in params.items()} for node, params in got.items()}

@@ -9,30 +9,20 @@ from launch.events import Shutdown, matches_action
 from launch_ros.actions import LifecycleNode, LifecycleTransition
 from launch_ros.event_handlers import OnStateTransition
 from launch_ros.events.lifecycle import ChangeState, StateTransition, matches_node_name
+from ros2_cleanroom.cli_node import call_service, cli_node
 
 PKG = 'lr_test_pkg'
 T = lifecycle_msgs.msg.Transition
 
 
 def query_state(service: str) -> str:
-    """Ask get_state from a separate rclpy context, as an outside tool would."""
-    import rclpy
-    from rclpy.signals import SignalHandlerOptions
-
-    context = rclpy.Context()
-    rclpy.init(context=context, signal_handler_options=SignalHandlerOptions.NO)
-    try:
-        node = rclpy.create_node('lr_state_probe', context=context)
-        client = node.create_client(lifecycle_msgs.srv.GetState, service)
-        assert client.wait_for_service(timeout_sec=10.0), service
-        future = client.call_async(lifecycle_msgs.srv.GetState.Request())
-        executor = rclpy.executors.SingleThreadedExecutor(context=context)
-        executor.add_node(node)
-        executor.spin_until_future_complete(future, timeout_sec=10.0)
-        assert future.done(), 'get_state did not answer'
-        return future.result().current_state.label
-    finally:
-        context.try_shutdown()
+    """Ask get_state from a separate rclpy context, as an outside tool would: through
+    the clean room's own service-call helper (one copy, issue 13)."""
+    with cli_node('lr_state_probe') as node:
+        response = call_service(node, lifecycle_msgs.srv.GetState, service,
+                                lifecycle_msgs.srv.GetState.Request(), timeout=10.0)
+    assert response is not None, f'{service} did not answer'
+    return response.current_state.label
 
 
 def transitions_recorder(node, seen):
