@@ -1,0 +1,220 @@
+"""Checks of the capstone project brief (chapter 7): the night shift.
+
+The student's own bringup, `night_shift.launch.py`, reuses the capstone's
+sim.launch.py and robot.launch.py for three robots, turtle3 the inspector
+with a site layer of its own, and an argument `shift` that selects a
+parameter layer.  The check grades the running system, as a terminal would
+start it: one launch for the day shift and one for the night shift (each
+reads the nine values that make each robot itself while the launch is up),
+one with a shift that does not exist (it must be refused, naming the
+allowed values), then the student's spec with `speccheck live` against
+their own system (it must pass) and against the capstone with three
+ordinary robots (it must fail: turtle3 is no inspector there).
+"""
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+from labkit.errors import LabkitError
+from labkit.grading import requirements, spec_run
+from labkit.grading.exercise import Exercise
+from labkit.grading.launch_probe import LaunchProbe, probe
+from labkit.grading.student_package import StudentPackage
+from labkit.grading.verdict import Verdict
+from labkit.graph import GraphSnapshot, read_parameters
+
+LAUNCH_FILE = 'night_shift.launch.py'
+SPEC = 'specs/night_shift.spec.yaml'
+LAYERS = ('config/night_shift_inspector.yaml', 'config/night_shift_day.yaml',
+          'config/night_shift_night.yaml')
+ROBOTS = ('turtle1', 'turtle2', 'turtle3')
+INSPECTOR = 'turtle3'
+ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
+               'safety_monitor', 'mission_recorder')
+EXPECTED_NODES = ('/turtlesim', *(f'/{robot}/{node}' for robot in ROBOTS for node in ROBOT_NODES))
+BAD_SHIFT = 'evening'
+#: Seconds; only stops a launch that never comes up (three robots on a loaded machine).
+STARTUP_GUARD = 60.0
+SHOWN_FINDINGS = 4
+#: The planted defect: the capstone with three ordinary robots (turtle3 no inspector).
+DEFECT = ('capstone_bringup', 'capstone.launch.py', 'robot_count:=3')
+DEFECT_SHOWN = 'capstone.launch.py robot_count:=3'
+
+
+@dataclass(frozen=True)
+class Value:
+    """One parameter a robot must have, and where the brief says it comes from."""
+
+    node: str  # in the robot's namespace
+    name: str
+    value: Any
+    source: str
+
+
+ROUTES = {
+    'turtle1': [3.0, 3.0, 8.0, 3.0, 8.0, 8.0, 3.0, 8.0],
+    'turtle2': [5.5, 9.5, 9.5, 5.5, 5.5, 1.5, 1.5, 5.5],
+    'turtle3': [9.0, 8.0, 2.5, 8.0, 2.5, 3.0, 9.0, 3.0],
+}
+DAY_SPEEDS = {'turtle1': 1.0, 'turtle2': 1.5, 'turtle3': 0.6}
+STOP_DISTANCES = {'turtle1': 0.8, 'turtle2': 0.8, 'turtle3': 1.2}
+
+
+def expected(robot: str, shift: str) -> tuple[Value, ...]:
+    """What N2-N4 fix for `robot` in `shift`."""
+    own = ("the inspector's site layer (N2)" if robot == INSPECTOR
+           else f"the capstone's config of {robot} (N3)")
+    speed = DAY_SPEEDS[robot] if shift == 'day' else DAY_SPEEDS[robot] / 2
+    speed_source = own if shift == 'day' else f'the night layer: half of {DAY_SPEEDS[robot]} (N4)'
+    return (Value('patrol_planner', 'waypoints', ROUTES[robot], own),
+            Value('controller', 'max_linear', speed, speed_source),
+            Value('safety_monitor', 'stop_distance', STOP_DISTANCES[robot], own))
+
+
+PARAMETER_NODES = tuple(sorted({f'/{robot}/{value.node}' for robot in ROBOTS
+                                for value in expected(robot, 'day')}))
+
+
+def read_values(snapshot: GraphSnapshot) -> dict[str, dict[str, Any] | str]:
+    """The parameters of the nodes the brief gives values to, or why they could not be read."""
+    found: dict[str, dict[str, Any] | str] = {}
+    for node in PARAMETER_NODES:
+        if node not in snapshot.nodes:
+            found[node] = 'not running'
+            continue
+        try:
+            found[node] = read_parameters(node)
+        except LabkitError as error:
+            found[node] = str(error)
+    return found
+
+
+def _same(got: Any, want: Any) -> bool:
+    if isinstance(want, list):
+        return isinstance(got, list) and len(got) == len(want) \
+            and all(_same(g, w) for g, w in zip(got, want, strict=True))
+    return isinstance(got, float) and math.isclose(got, want, abs_tol=1e-9)
+
+
+def _robot_values(verdict: Verdict, run: LaunchProbe, robot: str, shift: str) -> None:
+    """One requirement per robot and shift: every value of `expected` as the brief says."""
+    read = run.inspected or {}
+    wrong = []
+    for value in expected(robot, shift):
+        node = f'/{robot}/{value.node}'
+        parameters = read.get(node, 'not running')
+        if isinstance(parameters, str):
+            wrong.append(f'{node}: {parameters}')
+        elif not _same(parameters.get(value.name), value.value):
+            wrong.append(f'{node} got {value.name} {parameters.get(value.name)}, expected '
+                         f'{value.value} from {value.source}')
+    shown = ', '.join(f'{value.name} {value.value}' for value in expected(robot, shift))
+    verdict.expect(not wrong, f'{robot} with {shown_shift(shift)}: {shown}',
+                   f'{robot} with {shown_shift(shift)}: ' + '; '.join(wrong))
+
+
+def _robots_running(verdict: Verdict, run: LaunchProbe) -> bool:
+    ok = requirements.node_running(verdict, run, '/turtlesim',
+                                   "include capstone_bringup's sim.launch.py (N1)")
+    for robot in ROBOTS:
+        missing = [node for node in ROBOT_NODES if f'/{robot}/{node}' not in run.nodes]
+        ok = verdict.expect(
+            not missing, f"{robot}'s six nodes run in /{robot}",
+            f'/{robot} lacks {", ".join(missing)}: include capstone_bringup\'s robot.launch.py '
+            f'with robot:={robot}, in a scoped group of its own (N1)') and ok
+    return ok
+
+
+def shown_shift(shift: str) -> str:
+    """The day shift is run without the argument: it must be the default (N4)."""
+    return 'the default shift (day)' if shift == 'day' else f'shift:={shift}'
+
+
+def _shift(package: StudentPackage, shift: str) -> LaunchProbe:
+    arguments = {} if shift == 'day' else {'shift': shift}
+    return probe(package, LAUNCH_FILE, EXPECTED_NODES, arguments=arguments,
+                 timeout=STARTUP_GUARD, inspect=read_values)
+
+
+def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
+    run = probe(package, LAUNCH_FILE, EXPECTED_NODES, arguments={'shift': BAD_SHIFT},
+                timeout=STARTUP_GUARD)
+    errors = run.launch_errors()
+    text = ' '.join(errors)
+    names_choices = all(re.search(rf'\b{name}\b', text) for name in ('day', 'night'))
+    if not run.exited_by_itself or run.processes:
+        verdict.fail(f'`{run.command}` started {len(run.processes)} processes instead of '
+                     f'refusing shift:={BAD_SHIFT} (N5): declare the argument with '
+                     "choices=['day', 'night']")
+        return
+    refusal = errors[-1] if errors else ''
+    verdict.expect(run.returncode != 0 and BAD_SHIFT in text and names_choices,
+                   f'shift:={BAD_SHIFT} is refused before anything starts: {refusal}',
+                   f'`{run.command}` ended (exit code {run.returncode}) without an error that '
+                   f"names '{BAD_SHIFT}' and the allowed values day and night (N5); it said: "
+                   + (' | '.join(errors) or ' | '.join(run.lines[-3:]) or 'nothing'))
+
+
+def _spec_command(package: StudentPackage, target: list[str]) -> str:
+    return ' '.join(['python -m speccheck live', package.shown(package.source / SPEC), *target])
+
+
+def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
+    """The student's spec against their own system, started by speccheck (which waits
+    for the spec's nodes; checking a system started elsewhere could miss one that a
+    fresh process has not discovered yet)."""
+    spec = package.source / SPEC
+    if not spec.is_file():
+        return verdict.fail(f'{package.shown(spec)} does not exist: write your spec there '
+                            '(N6)').passed
+    target = ['--launch', package.name, LAUNCH_FILE]
+    run = spec_run.run_speccheck(package, 'live', spec, target, _spec_command(package, target))
+    if run.returncode == 2:
+        return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
+    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
+    return verdict.expect(run.returncode == 0 and not run.failed,
+                          f'your spec passes your running system ({run.summary})',
+                          'your running system (the day shift) fails your spec (N6): fix the '
+                          f'spec or the system. `{run.command}` reported:\n      {findings}')
+
+
+def _spec_catches_defect(verdict: Verdict, package: StudentPackage) -> None:
+    target = ['--launch', *DEFECT]
+    run = spec_run.run_speccheck(package, 'live', package.source / SPEC, target,
+                                 _spec_command(package, target))
+    first = run.failed[0] if run.failed else run.error
+    verdict.expect(run.returncode == 1 and bool(run.failed),
+                   f'your spec catches {DEFECT_SHOWN}, where turtle3 is no inspector: {first}',
+                   f'your spec passes {DEFECT_SHOWN}, where turtle3 is an ordinary robot '
+                   "(the capstone's triangle, 1.0 m/s, stop distance 0.8): give the "
+                   "inspector's waypoints, max_linear and stop_distance their values in your "
+                   'spec, not only its node names (N6)')
+
+
+def check_night_shift(package: StudentPackage, verdict: Verdict) -> Verdict:
+    """Day and night shift as the brief says, a bad shift refused, the student's spec sound."""
+    files = ('launch/' + LAUNCH_FILE, *LAYERS)
+    if not requirements.files_installed(verdict, package, files):
+        return verdict
+    day = _shift(package, 'day')
+    if not requirements.launch_ran(verdict, day) or not _robots_running(verdict, day):
+        return verdict
+    for robot in ROBOTS:
+        _robot_values(verdict, day, robot, 'day')
+    night = _shift(package, 'night')
+    if requirements.launch_ran(verdict, night):
+        for robot in ROBOTS:
+            _robot_values(verdict, night, robot, 'night')
+    _bad_shift_refused(verdict, package)
+    if _spec_passes(verdict, package):
+        _spec_catches_defect(verdict, package)
+    return verdict
+
+
+EXERCISES = (
+    Exercise('ex74_night_shift', 'Capstone project (the night shift)',
+             ('launch/' + LAUNCH_FILE, *LAYERS, SPEC), check_night_shift),
+)
