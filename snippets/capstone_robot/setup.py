@@ -26,6 +26,7 @@ setup(
             'safety_monitor = capstone_robot.safety_monitor:main',
             'mission_recorder = capstone_robot.mission_recorder:main',
             'spawner = capstone_robot.spawner:main',
+            'sim_watchdog = capstone_robot.sim_watchdog:main',
         ],
     },
 )

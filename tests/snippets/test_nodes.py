@@ -89,9 +89,12 @@ def test_there_are_executables():
     assert EXECUTABLES, 'no executables installed from snippets/'
 
 
-#: What an executable needs to start at all, as its launch file gives it.
+#: What an executable needs to start at all, as its launch file gives it, or to
+#: stay up until it is stopped.
 REQUIRED_ARGUMENTS = {
     ('capstone_robot', 'spawner'): ('-p', 'turtle_name:=probe_turtle'),  # else it refuses
+    # Without a turtlesim it ends by itself after startup_timeout (10 s).
+    ('capstone_robot', 'sim_watchdog'): ('-p', f'startup_timeout:={10 * STARTUP_LIMIT}'),
 }
 
 
@@ -148,3 +151,20 @@ def test_controller_rejects_a_parameter_of_the_wrong_type(ros_env):
     controller._reader.join(timeout=STARTUP_LIMIT)
     assert controller.proc.returncode != 0
     assert 'update_rate' in controller.output
+
+
+def test_sim_watchdog_without_a_turtlesim_exits_with_an_error(ros_env):
+    """No /turtlesim within startup_timeout: one clear line and exit code 1, which
+    capstone.launch.py's sim:=false handler turns into a shutdown."""
+    watchdog = NodeProcess(ros_env, 'capstone_robot', 'sim_watchdog',
+                           '-p', 'startup_timeout:=1.0')
+    try:
+        code = watchdog.proc.wait(timeout=STARTUP_LIMIT)
+    finally:
+        if watchdog.proc.poll() is None:
+            watchdog.stop()
+    watchdog._reader.join(timeout=STARTUP_LIMIT)
+    assert code == 1, watchdog.output
+    assert ('[sim_watchdog]: /turtlesim not found within 1.0 s: start the simulator first, '
+            'or use sim:=true') in watchdog.output, watchdog.output
+    assert 'Traceback' not in watchdog.output, watchdog.output

@@ -9,15 +9,21 @@ robot started elsewhere).  Each robot is robot.launch.py in its own
 namespace, turtle1, turtle2, ...; each include sits in a scoped group so
 that one robot's arguments never leak into the next one's.  A critical
 node's exit shuts everything down (the handlers live next to those nodes,
-in sim.launch.py and robot.launch.py); this file logs why.
+in sim.launch.py and robot.launch.py); this file logs why.  With
+sim:=false the simulator is not this launch's process, so no handler can
+see it end: a watchdog node (sim_watchdog) watches the ROS graph for
+/turtlesim and exits when it is gone, and its exit shuts the system down.
 """
 from launch import LaunchContext, LaunchDescription
-from launch.actions import (DeclareLaunchArgument, GroupAction, IncludeLaunchDescription,
-                            LogInfo, OpaqueFunction, RegisterEventHandler)
-from launch.conditions import IfCondition
-from launch.event_handlers import OnShutdown
+from launch.actions import (DeclareLaunchArgument, EmitEvent, GroupAction,
+                            IncludeLaunchDescription, LogInfo, OpaqueFunction,
+                            RegisterEventHandler)
+from launch.conditions import IfCondition, UnlessCondition
+from launch.event_handlers import OnProcessExit, OnShutdown
+from launch.events import Shutdown
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
+from launch_ros.actions import Node
 from launch_ros.substitutions import FindPackageShare
 
 MAX_ROBOTS = 4  # config/turtle1.yaml ... turtle4.yaml
@@ -41,6 +47,10 @@ def robots(context: LaunchContext) -> list[GroupAction]:
 
 
 def generate_launch_description():
+    # sim:=false: the simulator runs elsewhere; when it is gone, this node exits.
+    sim_watchdog = Node(package='capstone_robot', executable='sim_watchdog',
+                        name='sim_watchdog', output='screen',
+                        condition=UnlessCondition(LaunchConfiguration('sim')))
     return LaunchDescription([
         DeclareLaunchArgument('sim', default_value='true',
                               description='Start turtlesim (true) or drive existing turtles'),
@@ -51,6 +61,12 @@ def generate_launch_description():
             launch_arguments={'robot_count': LaunchConfiguration('robot_count')}.items(),
             condition=IfCondition(LaunchConfiguration('sim'))),
         OpaqueFunction(function=robots),
+        sim_watchdog,
+        RegisterEventHandler(OnProcessExit(
+            target_action=sim_watchdog,
+            on_exit=[LogInfo(msg='The simulator watchdog exited: no world left, shutting down'),
+                     EmitEvent(event=Shutdown(reason='the simulator is gone'))],
+        )),
         RegisterEventHandler(OnShutdown(
             on_shutdown=lambda event, context: LogInfo(
                 msg=f'Capstone shutting down: {event.reason}'))),

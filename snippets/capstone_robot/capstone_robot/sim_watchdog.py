@@ -1,0 +1,73 @@
+"""Simulator watchdog: ends, with exit code 1, when turtlesim is gone.
+
+With ``sim:=false`` the simulator is not a process of the launch, so no
+``OnProcessExit`` can see it end.  This node can: it looks for the node
+``/turtlesim`` in the ROS graph every ``check_period`` seconds, and exits
+when it has left the graph, or when it has not come within
+``startup_timeout`` seconds.  The launch watches this node's exit instead
+(R7: without the simulator the system shuts down).  It asks the graph
+through its own node, as every node can, rather than by running
+``ros2 node list``, which on a real install starts the ros2 daemon.
+"""
+import sys
+import time
+
+import rclpy
+from rclpy.executors import ExternalShutdownException
+from rclpy.node import Node
+from rclpy.task import Future
+
+SIMULATOR = '/turtlesim'
+
+
+class SimWatchdog(Node):
+
+    def __init__(self):
+        super().__init__('sim_watchdog')
+        self.startup_timeout = self.declare_parameter('startup_timeout', 10.0).value
+        check_period = self.declare_parameter('check_period', 0.5).value
+        self.gone = Future()  # done, with the reason, once the simulator is not there
+        self.seen = False
+        self.started = time.monotonic()
+        self.create_timer(check_period, self.check)
+        self.get_logger().info(f'Looking for {SIMULATOR} (up to {self.startup_timeout:.1f} s)')
+
+    def simulator_running(self) -> bool:
+        return SIMULATOR in {f"{namespace.rstrip('/')}/{name}"
+                             for name, namespace in self.get_node_names_and_namespaces()}
+
+    def check(self):
+        if self.gone.done():
+            return
+        if self.simulator_running():
+            if not self.seen:
+                self.seen = True
+                self.get_logger().info(f'Found {SIMULATOR}: watching it')
+        elif self.seen:
+            self.gone.set_result(f'{SIMULATOR} has left the ROS graph: no world left')
+        elif time.monotonic() - self.started > self.startup_timeout:
+            self.gone.set_result(f'{SIMULATOR} not found within {self.startup_timeout:.1f} s: '
+                                 'start the simulator first, or use sim:=true')
+
+
+def main(args=None) -> int:
+    """Exit code 1 once the simulator is gone; 0 when stopped on purpose (Ctrl+C, launch)."""
+    rclpy.init(args=args)
+    node = None
+    try:
+        node = SimWatchdog()
+        rclpy.spin_until_future_complete(node, node.gone)
+        if node.gone.done():
+            node.get_logger().fatal(node.gone.result())
+            return 1
+    except (KeyboardInterrupt, ExternalShutdownException):
+        pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
+    finally:
+        if node is not None:
+            node.destroy_node()
+        rclpy.try_shutdown()
+    return 0
+
+
+if __name__ == '__main__':
+    sys.exit(main())
