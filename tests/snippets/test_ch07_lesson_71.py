@@ -74,6 +74,8 @@ def test_static_check_sees_the_arguments_and_turtlesim_but_no_robot(ros_env):
     assert len(unseen) == len(robot_nodes) == 12, report
     assert all(any(f'node {name}:' in line for line in unseen) for name in robot_nodes), report
     assert 'OpaqueFunction in capstone.launch.py' in done.stdout, report
+    assert any('not started because of a false condition: sim_watchdog' in line
+               for line in met), report  # started with sim:=false only
 
 
 def test_the_running_capstone_meets_its_spec(ros_env):
