@@ -153,11 +153,16 @@ def test_controller_rejects_a_parameter_of_the_wrong_type(ros_env):
     assert 'update_rate' in controller.output
 
 
-def test_sim_watchdog_without_a_turtlesim_exits_with_an_error(ros_env):
-    """No /turtlesim within startup_timeout: one clear line and exit code 1, which
-    capstone.launch.py's sim:=false handler turns into a shutdown."""
+@pytest.mark.parametrize('world_args, world', [
+    ((), '/turtlesim'),
+    (('-p', 'world_node:=/base_driver'), '/base_driver'),
+], ids=['turtlesim', 'a real robot driver'])
+def test_sim_watchdog_without_a_turtlesim_exits_with_an_error(ros_env, world_args, world):
+    """No world node (/turtlesim, or on a real robot the driver its world_node names)
+    within startup_timeout: one clear line and exit code 1, which capstone.launch.py's
+    sim:=false handler turns into a shutdown."""
     watchdog = NodeProcess(ros_env, 'capstone_robot', 'sim_watchdog',
-                           '-p', 'startup_timeout:=1.0')
+                           '-p', 'startup_timeout:=1.0', *world_args)
     try:
         code = watchdog.proc.wait(timeout=STARTUP_LIMIT)
     finally:
@@ -165,6 +170,6 @@ def test_sim_watchdog_without_a_turtlesim_exits_with_an_error(ros_env):
             watchdog.stop()
     watchdog._reader.join(timeout=STARTUP_LIMIT)
     assert code == 1, watchdog.output
-    assert ('[sim_watchdog]: /turtlesim not found within 1.0 s: start the simulator first, '
+    assert (f'[sim_watchdog]: {world} not found within 1.0 s: start the simulator first, '
             'or use sim:=true') in watchdog.output, watchdog.output
     assert 'Traceback' not in watchdog.output, watchdog.output

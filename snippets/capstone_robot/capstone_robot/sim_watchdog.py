@@ -2,8 +2,9 @@
 
 With ``sim:=false`` the simulator is not a process of the launch, so no
 ``OnProcessExit`` can see it end.  This node can: it looks for the node
-``/turtlesim`` in the ROS graph every ``check_period`` seconds, and exits
-when it has left the graph, or when it has not come within
+``world_node`` (default ``/turtlesim``; on a real robot, the driver the
+robots cannot do without) in the ROS graph every ``check_period`` seconds,
+and exits when it has left the graph, or when it has not come within
 ``startup_timeout`` seconds.  The launch watches this node's exit instead
 (R7: without the simulator the system shuts down).  It asks the graph
 through its own node, as every node can, rather than by running
@@ -17,23 +18,21 @@ from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
 from rclpy.task import Future
 
-SIMULATOR = '/turtlesim'
-
-
 class SimWatchdog(Node):
 
     def __init__(self):
         super().__init__('sim_watchdog')
+        self.world = self.declare_parameter('world_node', '/turtlesim').value
         self.startup_timeout = self.declare_parameter('startup_timeout', 10.0).value
         check_period = self.declare_parameter('check_period', 0.5).value
         self.gone = Future()  # done, with the reason, once the simulator is not there
         self.seen = False
         self.started = time.monotonic()
         self.create_timer(check_period, self.check)
-        self.get_logger().info(f'Looking for {SIMULATOR} (up to {self.startup_timeout:.1f} s)')
+        self.get_logger().info(f'Looking for {self.world} (up to {self.startup_timeout:.1f} s)')
 
     def simulator_running(self) -> bool:
-        return SIMULATOR in {f"{namespace.rstrip('/')}/{name}"
+        return self.world in {f"{namespace.rstrip('/')}/{name}"
                              for name, namespace in self.get_node_names_and_namespaces()}
 
     def check(self):
@@ -42,11 +41,11 @@ class SimWatchdog(Node):
         if self.simulator_running():
             if not self.seen:
                 self.seen = True
-                self.get_logger().info(f'Found {SIMULATOR}: watching it')
+                self.get_logger().info(f'Found {self.world}: watching it')
         elif self.seen:
-            self.gone.set_result(f'{SIMULATOR} has left the ROS graph: no world left')
+            self.gone.set_result(f'{self.world} has left the ROS graph: no world left')
         elif time.monotonic() - self.started > self.startup_timeout:
-            self.gone.set_result(f'{SIMULATOR} not found within {self.startup_timeout:.1f} s: '
+            self.gone.set_result(f'{self.world} not found within {self.startup_timeout:.1f} s: '
                                  'start the simulator first, or use sim:=true')
 
 
