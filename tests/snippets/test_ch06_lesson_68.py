@@ -12,7 +12,6 @@ counted exactly.
 """
 from __future__ import annotations
 
-import re
 import subprocess
 import sys
 from pathlib import Path
@@ -22,6 +21,7 @@ import pytest
 import speccheck
 from textbook import paths
 
+from ._drafts import assert_draft_is_the_replys_code_block
 from ._shown_snippets import launch_files_included_by
 
 LESSON = paths.LESSONS / 'ch06/L2/08_requirements_to_launch_file.md'
@@ -37,15 +37,8 @@ CODE_DEFAULTS = {'update_rate': 10.0, 'max_linear_speed': 0.5, 'max_angular_spee
 LEFTOVER = 'robot_controller_params_*.yaml'
 
 
-def _code_blocks(markdown: str) -> list[str]:
-    return re.findall(r'^```python\n(.*?)^```$', markdown, re.MULTILINE | re.DOTALL)
-
-
 def test_stored_draft_is_the_replys_code_block():
-    blocks = _code_blocks(REPLY.read_text())
-    assert len(blocks) == 1, f'{REPLY} should hold exactly one python code block'
-    assert DRAFT.read_bytes() == blocks[0].encode(), (
-        f'{DRAFT.name} differs from the code block of {REPLY}: drafts are kept verbatim')
+    assert_draft_is_the_replys_code_block(REPLY, DRAFT)
 
 
 def test_draft_is_stored_with_its_prompt_and_note():

@@ -25,6 +25,7 @@ import yaml
 from textbook import paths
 
 from .._polling import wait_for
+from ._drafts import assert_draft_is_the_replys_code_block
 from ._launch_log import DDS_SHUTDOWN_HANG, ENDED
 from ._shown_snippets import launch_files_included_by
 
@@ -47,15 +48,8 @@ ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
 TESTED = {(PACKAGE, name) for name in ('sim.launch.py', 'robot.launch.py', BOOK, DRAFT.name)}
 
 
-def _code_blocks(markdown: str) -> list[str]:
-    return re.findall(r'^```python\n(.*?)^```$', markdown, re.MULTILINE | re.DOTALL)
-
-
 def test_stored_draft_is_the_replys_code_block():
-    blocks = _code_blocks(REPLY.read_text())
-    assert len(blocks) == 1, f'{REPLY} should hold exactly one python code block'
-    assert DRAFT.read_bytes() == blocks[0].encode(), (
-        f'{DRAFT.name} differs from the code block of {REPLY}: drafts are kept verbatim')
+    assert_draft_is_the_replys_code_block(REPLY, DRAFT)
 
 
 def test_draft_is_stored_with_its_prompt_and_note():
