@@ -17,24 +17,20 @@ without any change to the test.
 from __future__ import annotations
 
 import os
-import re
 import shutil
-import subprocess
-import tempfile
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 from labkit.grading.exercise import SNIPPETS, Exercise
 from labkit.grading.student_package import StudentPackage
+from labkit.grading.test_run import grade_against_defects
 from labkit.grading.verdict import Verdict
 
 TEST = 'test/test_ex615_dock_watch.py'
 BOOK_PACKAGE = 'dock_watch_pkg'
 LAUNCH_FILE = 'dock_watch_v2.launch.py'
 DEFECTS = SNIPPETS / BOOK_PACKAGE / 'test' / 'defects'
-RUN_TIMEOUT = 300.0  # seconds; only stops a hung run, never a speed limit
-VERDICT_LINE = re.compile(r'^(\w+) \([\w.]+\) \.\.\. (ok|FAIL|ERROR)$', re.M)
-REASON_LINE = re.compile(r'^(\w+(?:\.\w+)*(?:Error|Exception): .*)$', re.M)
 
 
 @dataclass(frozen=True)
@@ -84,59 +80,21 @@ def broken_prefix(installed: Path, system: BrokenSystem, folder: Path) -> Path:
     return prefix
 
 
-def run_test(test_file: Path, env: dict[str, str], cwd: Path) -> subprocess.CompletedProcess:
-    """`launch_test FILE`, as the student's terminal runs it."""
-    launch_test = shutil.which('launch_test', path=env.get('PATH')) or 'launch_test'
-    return subprocess.run([launch_test, str(test_file)], env=env, cwd=cwd,
-                          stdin=subprocess.DEVNULL, capture_output=True, text=True,
-                          timeout=RUN_TIMEOUT, check=False)
-
-
-def summary(result: subprocess.CompletedProcess) -> str:
-    """The tests that did not pass, with the first reason given, from the report."""
-    failed = [f'{name} {outcome}' for name, outcome in VERDICT_LINE.findall(result.stderr)
-              if outcome != 'ok']
-    reasons = REASON_LINE.findall(result.stderr)
-    if not failed:
-        tail = (result.stderr.strip() or result.stdout.strip()).splitlines()[-3:]
-        return 'no test failed; the run ended with: ' + (' | '.join(tail) or 'nothing')
-    return ', '.join(failed) + (f' ({reasons[0]})' if reasons else '')
-
-
 def check_dock_watch_test(package: StudentPackage, verdict: Verdict) -> Verdict:
     """The student's test passes on the working system and fails on each broken one."""
     test_file = package.source / TEST
     if not test_file.is_file():
         return verdict.fail(f'{package.shown(test_file)} does not exist: run '
                             "labkit.exercises.setup('ex615_dock_watch_test')")
-    env = package.environment()
-    installed = installed_prefix(env)
+    installed = installed_prefix(package.environment())
     if installed is None:
         return verdict.fail(f'{BOOK_PACKAGE} is not installed in the sourced workspace: '
                             f"build the book's {BOOK_PACKAGE} and source install/setup.bash")
-    shown = f'`launch_test {package.shown(test_file)}`'
-    working = run_test(test_file, env, package.workspace)
-    if not VERDICT_LINE.search(working.stderr):
-        return verdict.fail(f'{shown} runs no test: write an active test class '
-                            '(unittest.TestCase) whose tests wait for the system, and a '
-                            f'post-shutdown one ({summary(working)})')
-    if not verdict.expect(
-            working.returncode == 0,
-            f'{shown} passes on the working system ({LAUNCH_FILE} as shipped)',
-            f'{shown} must pass on the working system ({LAUNCH_FILE} as shipped) first: '
-            f'{summary(working)}'):
-        return verdict
-    with tempfile.TemporaryDirectory(prefix='ex615_') as scratch:
-        for system in BROKEN:
-            prefix = broken_prefix(installed, system, Path(scratch))
-            broken_env = dict(env, AMENT_PREFIX_PATH=os.pathsep.join(
-                [str(prefix), env.get('AMENT_PREFIX_PATH', '')]))
-            result = run_test(test_file, broken_env, package.workspace)
-            verdict.expect(
-                result.returncode != 0,
-                f'{shown} fails on a system whose {system.what}: {summary(result)}',
-                f'{shown} passes on a system whose {system.what}: {system.hint}')
-    return verdict
+    return grade_against_defects(
+        package, verdict, test_file=test_file,
+        working=f'working system ({LAUNCH_FILE} as shipped)',
+        no_test_hint='whose tests wait for the system', broken=BROKEN,
+        broken_prefix=partial(broken_prefix, installed))
 
 
 EXERCISES = (

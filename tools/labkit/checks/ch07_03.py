@@ -1,7 +1,7 @@
 """Checks of lesson 7.3 (Testing and operating it).
 
 Exercise 7.3.1 grades a fault test, so the check runs it, as lesson 6.15's
-check does (its `run_test` and `summary` are reused): `launch_test` on the
+check does (both use labkit.grading.test_run): `launch_test` on the
 student's test file against the working capstone, then against broken
 versions of capstone_bringup.  A test earns its keep by passing on the first
 and failing on every other; a test that passes on a broken system is named
@@ -18,13 +18,13 @@ from __future__ import annotations
 
 import os
 import shutil
-import tempfile
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
-from labkit.checks.ch06_15 import VERDICT_LINE, run_test, summary
 from labkit.grading.exercise import SNIPPETS, Exercise
 from labkit.grading.student_package import StudentPackage
+from labkit.grading.test_run import grade_against_defects
 from labkit.grading.verdict import Verdict
 
 TEST = 'test/test_ex73_capstone_fault.py'
@@ -83,34 +83,15 @@ def check_capstone_fault_test(package: StudentPackage, verdict: Verdict) -> Verd
     if not test_file.is_file():
         return verdict.fail(f'{package.shown(test_file)} does not exist: run '
                             "labkit.exercises.setup('ex73_capstone_fault_test')")
-    env = package.environment()
-    installed = installed_share(env)
+    installed = installed_share(package.environment())
     if installed is None:
         return verdict.fail(f'{BOOK_PACKAGE} is not installed in the sourced workspace: '
                             f"build the book's {BOOK_PACKAGE} and source install/setup.bash")
-    shown = f'`launch_test {package.shown(test_file)}`'
-    working = run_test(test_file, env, package.workspace)
-    if not VERDICT_LINE.search(working.stderr):
-        return verdict.fail(f'{shown} runs no test: write an active test class '
-                            '(unittest.TestCase) that plants the fault and waits for the '
-                            f'reaction, and a post-shutdown one ({summary(working)})')
-    if not verdict.expect(
-            working.returncode == 0,
-            f'{shown} passes on the working capstone ({LAUNCH_FILE} as shipped)',
-            f'{shown} must pass on the working capstone ({LAUNCH_FILE} as shipped) first: '
-            f'{summary(working)}'):
-        return verdict
-    with tempfile.TemporaryDirectory(prefix='ex73_') as scratch:
-        for system in BROKEN:
-            prefix = broken_prefix(installed, system, Path(scratch))
-            broken_env = dict(env, AMENT_PREFIX_PATH=os.pathsep.join(
-                [str(prefix), env.get('AMENT_PREFIX_PATH', '')]))
-            result = run_test(test_file, broken_env, package.workspace)
-            verdict.expect(
-                result.returncode != 0,
-                f'{shown} fails on a system whose {system.what}: {summary(result)}',
-                f'{shown} passes on a system whose {system.what}: {system.hint}')
-    return verdict
+    return grade_against_defects(
+        package, verdict, test_file=test_file,
+        working=f'working capstone ({LAUNCH_FILE} as shipped)',
+        no_test_hint='that plants the fault and waits for the reaction', broken=BROKEN,
+        broken_prefix=partial(broken_prefix, installed))
 
 
 EXERCISES = (
