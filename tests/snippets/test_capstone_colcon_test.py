@@ -13,22 +13,19 @@ and none of its processes may outlive it.
 """
 from __future__ import annotations
 
-import re
 import shutil
 import subprocess
-import uuid
 from collections.abc import Iterator
+from functools import partial
 from pathlib import Path
 
-import psutil
 import pytest
-from labkit.grading.student_package import StudentPackage
 from textbook import paths
 
+from ._colcon_runs import build_copy, colcon_test, marked_environment
 from ._launch_log import DDS_SHUTDOWN_HANG
 
 PACKAGE = 'capstone_bringup'
-SOURCE = paths.SNIPPETS / PACKAGE
 NOT_CRITICAL = paths.SNIPPETS / 'ch07_defects' / 'robot_monitor_not_critical.launch.py'
 HANG_GUARD = 900  # seconds; only stops a hung run, never a speed limit
 MARK = 'CAPSTONE_COLCON_TEST_RUN'
@@ -40,58 +37,26 @@ ALL_TESTS = {LAUNCH_TESTING, *PYTEST_TESTS}
 pytestmark = DDS_SHUTDOWN_HANG  # each run stops the capstone's nodes at once, three times
 
 
-def _left_behind(token: str) -> list[psutil.Process]:
-    found = []
-    for proc in psutil.process_iter():
-        try:
-            if proc.environ().get(MARK) == token and proc.status() != psutil.STATUS_ZOMBIE:
-                found.append(proc)
-        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
-            continue
-    return found
-
-
 @pytest.fixture
 def run_env(ros_env: dict[str, str]) -> Iterator[dict[str, str]]:
     """The student's terminal, marked; fails the test if a marked process survives it."""
-    token = uuid.uuid4().hex
-    yield dict(ros_env, **{MARK: token})
-    leftovers = _left_behind(token)
-    for proc in leftovers:
-        proc.kill()
-    assert not leftovers, f'processes left behind: {leftovers}'
+    yield from marked_environment(ros_env, MARK)
 
 
-def _run(argv: list[str], env: dict[str, str], cwd: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(argv, env=env, cwd=cwd, capture_output=True, text=True,
-                          stdin=subprocess.DEVNULL, timeout=HANG_GUARD, check=False)
+def _plant(robot_launch: Path, package: Path) -> None:
+    shutil.copyfile(robot_launch, package / 'launch' / 'robot.launch.py')
 
 
 def _workspace(root: Path, env: dict[str, str], robot_launch: Path | None = None
                ) -> dict[str, str]:
     """A workspace with a copy of the package (robot.launch.py replaced if asked), built."""
-    package = root / 'src' / PACKAGE
-    shutil.copytree(SOURCE, package, ignore=shutil.ignore_patterns('__pycache__'))
-    if robot_launch is not None:
-        shutil.copyfile(robot_launch, package / 'launch' / 'robot.launch.py')
-    build = _run([paths.executable('colcon'), 'build'], env, root)
-    assert build.returncode == 0, build.stdout + build.stderr
-    return StudentPackage(root, PACKAGE).environment(env)
+    return build_copy(root, PACKAGE, env, HANG_GUARD,
+                      edit=partial(_plant, robot_launch) if robot_launch else None)
 
 
 def _colcon_test(root: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess[str],
                                                            dict[str, str]]:
-    """`colcon test`, then `colcon test-result --verbose`; its result and each test's outcome."""
-    tested = _run([paths.executable('colcon'), 'test', '--packages-select', PACKAGE], env, root)
-    assert tested.returncode == 0, tested.stdout + tested.stderr  # failing tests are not errors
-    result = _run([paths.executable('colcon'), 'test-result', '--verbose'], env, root)
-    report = root / 'build' / PACKAGE / 'pytest.xml'
-    outcomes = {}
-    for case in re.finditer(r'<testcase [^>]*name="(\w+)"[^>]*?(/>|>(.*?)</testcase>)',
-                            report.read_text(), re.S):
-        failed = case.group(3) and re.search(r'<(failure|error)\b', case.group(3))
-        outcomes[case.group(1)] = 'failed' if failed else 'passed'
-    return result, outcomes
+    return colcon_test(root, PACKAGE, env, HANG_GUARD)
 
 
 def _hangs(root: Path) -> str:

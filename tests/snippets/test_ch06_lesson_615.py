@@ -17,17 +17,15 @@ none of its processes may outlive it.
 from __future__ import annotations
 
 import re
-import shutil
 import subprocess
-import uuid
 from collections.abc import Iterator
 from pathlib import Path
 
 import labkit
-import psutil
 import pytest
-from labkit.grading.student_package import StudentPackage
 from textbook import paths
+
+from ._colcon_runs import build_copy, colcon_test, marked_environment, run
 
 PACKAGE = 'dock_watch_pkg'
 SOURCE = paths.SNIPPETS / PACKAGE
@@ -41,60 +39,31 @@ RATE_LINE = "DeclareLaunchArgument('battery_rate', default_value='5.0',"
 PLANTED_RATE = "DeclareLaunchArgument('battery_rate', default_value='2.0',"
 
 
-def _left_behind(token: str) -> list[psutil.Process]:
-    found = []
-    for proc in psutil.process_iter():
-        try:
-            if proc.environ().get(MARK) == token and proc.status() != psutil.STATUS_ZOMBIE:
-                found.append(proc)
-        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
-            continue
-    return found
-
-
 @pytest.fixture
 def run_env(ros_env: dict[str, str]) -> Iterator[dict[str, str]]:
     """The student's terminal, marked; fails the test if a marked process survives it."""
-    token = uuid.uuid4().hex
-    yield dict(ros_env, **{MARK: token})
-    leftovers = _left_behind(token)
-    for proc in leftovers:
-        proc.kill()
-    assert not leftovers, f'processes left behind: {leftovers}'
+    yield from marked_environment(ros_env, MARK)
 
 
 def _run(argv: list[str], env: dict[str, str], cwd: Path) -> subprocess.CompletedProcess[str]:
-    return subprocess.run(argv, env=env, cwd=cwd, capture_output=True, text=True,
-                          stdin=subprocess.DEVNULL, timeout=HANG_GUARD, check=False)
+    return run(argv, env, cwd, HANG_GUARD)
+
+
+def _plant_rate(package: Path) -> None:
+    launch_file = package / 'launch' / 'dock_watch_v2.launch.py'
+    text = launch_file.read_text()
+    assert RATE_LINE in text, 'the lesson plants its defect in this line'
+    launch_file.write_text(text.replace(RATE_LINE, PLANTED_RATE))
 
 
 def _workspace(root: Path, env: dict[str, str], planted: bool = False) -> dict[str, str]:
     """A workspace with a copy of the package (the rate planted back to 2.0 if asked), built."""
-    package = root / 'src' / PACKAGE
-    shutil.copytree(SOURCE, package, ignore=shutil.ignore_patterns('__pycache__'))
-    if planted:
-        launch_file = package / 'launch' / 'dock_watch_v2.launch.py'
-        text = launch_file.read_text()
-        assert RATE_LINE in text, 'the lesson plants its defect in this line'
-        launch_file.write_text(text.replace(RATE_LINE, PLANTED_RATE))
-    build = _run([paths.executable('colcon'), 'build'], env, root)
-    assert build.returncode == 0, build.stdout + build.stderr
-    return StudentPackage(root, PACKAGE).environment(env)
+    return build_copy(root, PACKAGE, env, HANG_GUARD, edit=_plant_rate if planted else None)
 
 
 def _colcon_test(root: Path, env: dict[str, str]) -> tuple[subprocess.CompletedProcess[str],
                                                            dict[str, str]]:
-    """`colcon test`, then `colcon test-result --verbose`; its result and each test's outcome."""
-    tested = _run([paths.executable('colcon'), 'test', '--packages-select', PACKAGE], env, root)
-    assert tested.returncode == 0, tested.stdout + tested.stderr  # failing tests are not errors
-    result = _run([paths.executable('colcon'), 'test-result', '--verbose'], env, root)
-    report = root / 'build' / PACKAGE / 'pytest.xml'
-    outcomes = {}
-    for case in re.finditer(r'<testcase [^>]*name="(\w+)"[^>]*?(/>|>(.*?)</testcase>)',
-                            report.read_text(), re.S):
-        failed = case.group(3) and re.search(r'<(failure|error)\b', case.group(3))
-        outcomes[case.group(1)] = 'failed' if failed else 'passed'
-    return result, outcomes
+    return colcon_test(root, PACKAGE, env, HANG_GUARD)
 
 
 def test_colcon_test_passes_on_the_package(tmp_path, run_env):
