@@ -13,10 +13,18 @@ class ConfigurationError(ValueError):
 
 
 def run(make_node: Callable[[], Node], args: list[str] | None = None) -> int:
-    """Spin the node ``make_node`` builds; 0 when stopped on purpose (Ctrl+C, launch)."""
-    rclpy.init(args=args)
+    """Spin the node ``make_node`` builds; 0 when stopped on purpose (Ctrl+C, launch).
+
+    A launch may stop a node at any moment, also while it is still starting (a
+    fault test that kills a critical node early, on a busy machine).  Then
+    rclpy's Ctrl+C handler has already shut the context down and creating the
+    next publisher or timer fails; that is a stop on purpose too, not a crash.
+    """
     node = None
+    initialised = False
     try:
+        rclpy.init(args=args)
+        initialised = True
         node = make_node()  # Ctrl+C may come while it starts: it is on the graph already
         rclpy.spin(node)
     except ConfigurationError as error:
@@ -24,6 +32,9 @@ def run(make_node: Callable[[], Node], args: list[str] | None = None) -> int:
         return 1
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
+    except Exception:
+        if not initialised or rclpy.ok():
+            raise  # a real error, not a stop while starting
     finally:
         if node is not None:
             node.destroy_node()
