@@ -14,12 +14,14 @@ config/<robot>.yaml, the inspector's site layer (turtle3 only), and the
 shift's layer.  A layer names a node for every robot (/**/controller) or for
 one robot (/turtle2/controller).
 """
+import shutil
 import tempfile
 
 import yaml
 from launch import LaunchContext, LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription, \
-    OpaqueFunction
+    OpaqueFunction, RegisterEventHandler
+from launch.event_handlers import OnShutdown
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
 from launch_ros.substitutions import FindPackageShare
@@ -33,8 +35,9 @@ def share(package: str, *path: str) -> PathJoinSubstitution:
     return PathJoinSubstitution([FindPackageShare(package), *path])
 
 
-def layered(context: LaunchContext, robot: str, layers: list[str]) -> str:
-    """One parameter file for `robot` from `layers` (later layers win), keyed /**/<node>."""
+def layered(folder: str, robot: str, layers: list[str]) -> str:
+    """One parameter file for `robot` in `folder` from `layers` (later layers win),
+    keyed /**/<node>."""
     merged: dict[str, dict] = {}
     for layer in layers:
         with open(layer) as stream:
@@ -43,11 +46,11 @@ def layered(context: LaunchContext, robot: str, layers: list[str]) -> str:
             scope, _, node = key.rpartition('/')
             if scope in ('/**', f'/{robot}'):
                 merged.setdefault(f'/**/{node}', {}).update(entry['ros__parameters'])
-    with tempfile.NamedTemporaryFile('w', prefix=f'night_shift_{robot}_', suffix='.yaml',
-                                     delete=False) as out:
+    path = f'{folder}/{robot}.yaml'
+    with open(path, 'w') as out:
         yaml.safe_dump({key: {'ros__parameters': values} for key, values in merged.items()},
                        out)
-    return out.name
+    return path
 
 
 def night_shift(context: LaunchContext) -> list:
@@ -55,16 +58,21 @@ def night_shift(context: LaunchContext) -> list:
     shift = LaunchConfiguration('shift').perform(context)  # checked: choices=SHIFTS
     mine = share('my_ws_exercises', 'config').perform(context)
     capstone = share('capstone_bringup', 'config').perform(context)
-    actions = [IncludeLaunchDescription(
-        PythonLaunchDescriptionSource(share('capstone_bringup', 'launch', 'sim.launch.py')),
-        launch_arguments={'robot_count': str(len(ROBOTS))}.items())]
+    folder = tempfile.mkdtemp(prefix='night_shift_')  # the merged files, removed at the end
+    actions = [
+        RegisterEventHandler(OnShutdown(
+            on_shutdown=lambda event, context: shutil.rmtree(folder, ignore_errors=True))),
+        IncludeLaunchDescription(
+            PythonLaunchDescriptionSource(share('capstone_bringup', 'launch', 'sim.launch.py')),
+            launch_arguments={'robot_count': str(len(ROBOTS))}.items()),
+    ]
     for robot in ROBOTS:
         layers = [f'{capstone}/{robot}.yaml']
         layers.append(f'{mine}/night_shift_{shift}.yaml')
         actions.append(GroupAction(scoped=True, actions=[IncludeLaunchDescription(
             PythonLaunchDescriptionSource(share('capstone_bringup', 'launch', 'robot.launch.py')),
             launch_arguments={'robot': robot,
-                              'robot_params': layered(context, robot, layers)}.items())]))
+                              'robot_params': layered(folder, robot, layers)}.items())]))
     return actions
 
 
