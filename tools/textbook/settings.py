@@ -14,7 +14,7 @@ from . import paths
 
 @dataclass(frozen=True)
 class Settings:
-    cell_timeout: int = 180  # seconds; a cell that runs longer is reported as hung
+    cell_timeout: int = 300  # seconds; a cell that runs longer is reported as hung
     jobs: int = 2            # lessons executed at the same time by the site build
     fresh: bool = False      # tests execute every lesson even when its result is cached
     test_workers: int = 2    # pytest-xdist workers of `python -m textbook test`
