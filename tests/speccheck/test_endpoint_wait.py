@@ -1,11 +1,12 @@
-"""The launch check waits for the endpoints a spec names: discovery reports a
-node before its publishers and subscribers, and a check that looked at once
-reported a subscription that was merely late as missing (seen in CI under load)."""
+"""The running check waits for what the spec names: discovery reports a node seconds
+after it starts on a busy machine, and its subscriptions after the node; a check that
+looked at once reported a subscription that was merely late as missing (seen in CI),
+and `speccheck live` without --launch a running node as 'not running'."""
 from __future__ import annotations
 
 import labkit
 from labkit.graph import GraphSnapshot, Topic
-from speccheck import live_run, load_spec
+from speccheck import live_check, load_spec
 
 SPEC = """\
 nodes:
@@ -18,24 +19,31 @@ topics:
 """
 
 
-def snapshot(subscribers: tuple[str, ...]) -> GraphSnapshot:
+def snapshot(nodes: tuple[str, ...], subscribers: tuple[str, ...] = ()) -> GraphSnapshot:
     topic = Topic('/reading', ('std_msgs/msg/Float32',), ('/sensor',), subscribers)
-    return GraphSnapshot(('/monitor', '/sensor'), {'/reading': topic})
+    return GraphSnapshot(nodes, {'/reading': topic} if '/sensor' in nodes else {})
 
 
-def test_waits_until_a_late_subscription_is_discovered(monkeypatch, write_spec):
-    looks = iter([GraphSnapshot(('/monitor', '/sensor'), {}), snapshot(()), snapshot(()),
-                  snapshot(('/monitor',))])
-    seen = []
+def looks(monkeypatch, *snapshots: GraphSnapshot) -> list[GraphSnapshot]:
+    """labkit.graph() gives `snapshots` in turn; returns the list of those it gave."""
+    given: list[GraphSnapshot] = []
+    queue = iter(snapshots)
 
     def graph() -> GraphSnapshot:
-        seen.append(next(looks))
-        return seen[-1]
+        given.append(next(queue))
+        return given[-1]
 
     monkeypatch.setattr(labkit, 'graph', graph)
-    monkeypatch.setattr(live_run.time, 'sleep', lambda seconds: None)
-    live_run._wait_for_endpoints(load_spec(write_spec(SPEC)), grace=30.0)
-    assert len(seen) == 4
+    monkeypatch.setattr(live_check.time, 'sleep', lambda seconds: None)
+    return given
+
+
+def test_waits_for_a_late_node_and_a_late_subscription(monkeypatch, write_spec):
+    complete = snapshot(('/monitor', '/sensor'), ('/monitor',))
+    given = looks(monkeypatch, snapshot(('/sensor',)), snapshot(('/monitor', '/sensor')),
+                  complete)
+    assert live_check._wait_for_spec(load_spec(write_spec(SPEC)), grace=30.0) is complete
+    assert len(given) == 3
 
 
 def test_gives_up_after_the_grace_so_the_check_can_report_what_is_missing(monkeypatch,
@@ -46,10 +54,11 @@ def test_gives_up_after_the_grace_so_the_check_can_report_what_is_missing(monkey
         clock['looks'] += 1
         assert clock['looks'] < 20, 'still waiting long after the grace'
         clock['now'] += 1.0
-        return snapshot(())
+        return snapshot(('/monitor', '/sensor'))
 
     monkeypatch.setattr(labkit, 'graph', graph)
-    monkeypatch.setattr(live_run.time, 'monotonic', lambda: clock['now'])
-    monkeypatch.setattr(live_run.time, 'sleep', lambda seconds: None)
-    live_run._wait_for_endpoints(load_spec(write_spec(SPEC)), grace=3.0)
+    monkeypatch.setattr(live_check.time, 'monotonic', lambda: clock['now'])
+    monkeypatch.setattr(live_check.time, 'sleep', lambda seconds: None)
+    found = live_check._wait_for_spec(load_spec(write_spec(SPEC)), grace=3.0)
+    assert found.topics['/reading'].subscribers == ()
     assert clock['looks'] == 3

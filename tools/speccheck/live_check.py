@@ -6,6 +6,8 @@ over a bounded window.
 """
 from __future__ import annotations
 
+import time
+
 import labkit
 from labkit import qos, rates
 from labkit.graph import GraphSnapshot
@@ -18,12 +20,19 @@ MET, FAILED, NOT_CHECKED = Status.MET, Status.FAILED, Status.NOT_CHECKED
 
 #: Seconds of listening for rate measurements.
 DEFAULT_WINDOW = 3.0
+#: Seconds to wait for the nodes and endpoints the spec names before judging.
+DISCOVERY_GRACE = 10.0
 
 
 def check_live(spec: Spec, window: float = DEFAULT_WINDOW, target: str = 'running system',
-               ) -> Report:
-    """Check the running system against `spec` (rates are measured for `window` seconds)."""
-    snapshot = labkit.graph()
+               grace: float = DISCOVERY_GRACE) -> Report:
+    """Check the running system against `spec` (rates are measured for `window` seconds).
+
+    Discovery reports a node seconds after it starts on a busy machine, and its
+    publishers and subscriptions after the node, so what the spec names is
+    waited for, up to `grace` seconds; what is still missing then is reported.
+    """
+    snapshot = _wait_for_spec(spec, grace)
     findings: list[Finding] = []
     for node_spec in spec.nodes:
         findings += _node(node_spec, snapshot)
@@ -36,6 +45,31 @@ def check_live(spec: Spec, window: float = DEFAULT_WINDOW, target: str = 'runnin
     for topic in spec.topics:
         findings += _topic(topic, snapshot, measured)
     return Report('live', spec.source, target, tuple(findings))
+
+
+def _wait_for_spec(spec: Spec, grace: float) -> GraphSnapshot:
+    """The graph once every node, publisher and subscriber the spec names is in it,
+    or as it is after `grace` seconds."""
+    deadline = time.monotonic() + grace
+    while True:
+        snapshot = labkit.graph()
+        if _all_present(spec, snapshot) or time.monotonic() >= deadline:
+            return snapshot
+        time.sleep(0.1)
+
+
+def _all_present(spec: Spec, snapshot: GraphSnapshot) -> bool:
+    if any(node.name not in snapshot.nodes for node in spec.nodes):
+        return False
+    for topic in spec.topics:
+        found = snapshot.topics.get(topic.name)
+        wanted = (*topic.publishers, *topic.subscribers)
+        if wanted and found is None:
+            return False
+        if found is not None and not (set(topic.publishers) <= set(found.publishers)
+                                      and set(topic.subscribers) <= set(found.subscribers)):
+            return False
+    return True
 
 
 def _node(node_spec: NodeSpec, snapshot: GraphSnapshot) -> list[Finding]:
