@@ -12,6 +12,15 @@ class ConfigurationError(ValueError):
     """A parameter value the node cannot work with: logged plainly, exit code 1."""
 
 
+class Finished(Exception):
+    """Raised from a callback when the node cannot go on (it has logged why);
+    the process ends with exit code `code`, which a launch's OnProcessExit sees."""
+
+    def __init__(self, code: int = 1) -> None:
+        super().__init__(code)
+        self.code = code
+
+
 def run(make_node: Callable[[], Node], args: list[str] | None = None) -> int:
     """Spin the node ``make_node`` builds; 0 when stopped on purpose (Ctrl+C, launch).
 
@@ -30,6 +39,8 @@ def run(make_node: Callable[[], Node], args: list[str] | None = None) -> int:
     except ConfigurationError as error:
         rclpy.logging.get_logger('capstone_robot').fatal(str(error))
         return 1
+    except Finished as finished:
+        return finished.code
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
     except Exception:

@@ -10,13 +10,11 @@ and exits when it has left the graph, or when it has not come within
 through its own node, as every node can, rather than by running
 ``ros2 node list``, which on a real install starts the ros2 daemon.
 """
-import sys
 import time
 
-import rclpy
-from rclpy.executors import ExternalShutdownException
 from rclpy.node import Node
-from rclpy.task import Future
+
+from .running import Finished, run
 
 class SimWatchdog(Node):
 
@@ -25,7 +23,6 @@ class SimWatchdog(Node):
         self.world = self.declare_parameter('world_node', '/turtlesim').value
         self.startup_timeout = self.declare_parameter('startup_timeout', 10.0).value
         check_period = self.declare_parameter('check_period', 0.5).value
-        self.gone = Future()  # done, with the reason, once the simulator is not there
         self.seen = False
         self.started = time.monotonic()
         self.create_timer(check_period, self.check)
@@ -36,37 +33,25 @@ class SimWatchdog(Node):
                              for name, namespace in self.get_node_names_and_namespaces()}
 
     def check(self):
-        if self.gone.done():
-            return
         if self.simulator_running():
             if not self.seen:
                 self.seen = True
                 self.get_logger().info(f'Found {self.world}: watching it')
         elif self.seen:
-            self.gone.set_result(f'{self.world} has left the ROS graph: no world left')
+            self.give_up(f'{self.world} has left the ROS graph: no world left')
         elif time.monotonic() - self.started > self.startup_timeout:
-            self.gone.set_result(f'{self.world} not found within {self.startup_timeout:.1f} s: '
-                                 'start the simulator first, or use sim:=true')
+            self.give_up(f'{self.world} not found within {self.startup_timeout:.1f} s: '
+                         'start the simulator first, or use sim:=true')
+
+    def give_up(self, reason: str):
+        """Exit code 1, which capstone.launch.py's OnProcessExit turns into a shutdown."""
+        self.get_logger().fatal(reason)
+        raise Finished(1)
 
 
-def main(args=None) -> int:
-    """Exit code 1 once the simulator is gone; 0 when stopped on purpose (Ctrl+C, launch)."""
-    rclpy.init(args=args)
-    node = None
-    try:
-        node = SimWatchdog()
-        rclpy.spin_until_future_complete(node, node.gone)
-        if node.gone.done():
-            node.get_logger().fatal(node.gone.result())
-            return 1
-    except (KeyboardInterrupt, ExternalShutdownException):
-        pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
-    finally:
-        if node is not None:
-            node.destroy_node()
-        rclpy.try_shutdown()
-    return 0
+def main(args=None):
+    return run(SimWatchdog, args)
 
 
 if __name__ == '__main__':
-    sys.exit(main())
+    main()
