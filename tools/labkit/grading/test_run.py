@@ -25,7 +25,7 @@ VERDICT_LINE = re.compile(r'^(\w+) \([\w.]+\) \.\.\. (ok|FAIL|ERROR)$', re.M)
 REASON_LINE = re.compile(r'^(\w+(?:\.\w+)*(?:Error|Exception): .*)$', re.M)
 
 
-class BrokenSystem(Protocol):
+class PlantedDefect(Protocol):
     """A planted defect: what it breaks and what a test must do to notice it."""
 
     what: str  # completes 'a system whose ...'
@@ -52,8 +52,8 @@ def summary(result: subprocess.CompletedProcess) -> str:
 
 
 def grade_against_defects(package: StudentPackage, verdict: Verdict, *, test_file: Path,
-                          working: str, no_test_hint: str, broken: Sequence[BrokenSystem],
-                          broken_prefix: Callable[[BrokenSystem, Path], Path]) -> Verdict:
+                          working: str, no_test_hint: str, broken: Sequence[PlantedDefect],
+                          broken_prefix: Callable[[PlantedDefect, Path], Path]) -> Verdict:
     """Run the student's `test_file` on the working system (`working` names it), then
     once per broken system, each seen through the prefix `broken_prefix(system, folder)`
     puts first on AMENT_PREFIX_PATH."""
