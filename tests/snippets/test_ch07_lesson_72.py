@@ -252,6 +252,7 @@ def test_sim_false_the_books_file_shuts_down_without_turtlesim(ros_env):
     output = book.output()
     assert exit_code == 0, output  # a shutdown asked for is a normal end
     assert '[sim_watchdog]: /turtlesim has left the ROS graph: no world left' in output, output
+    assert 'The simulator watchdog exited: no world left, shutting down' in output, output
     assert 'Capstone shutting down: the simulator is gone' in output, output
     died = [line for line in output.splitlines() if 'process has died' in line]
     assert len(died) == 1 and '[sim_watchdog-' in died[0] and 'exit code 1' in died[0], output
