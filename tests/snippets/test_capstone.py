@@ -17,7 +17,6 @@ import math
 import os
 import re
 import signal
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -29,7 +28,7 @@ from textbook import paths, workspace
 from .._polling import wait_for
 from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
 from ._turtlesim_client import SimClient, load_interfaces, load_turtlesim_interfaces
-from ._wiring import Wiring, wiring
+from ._wiring import Wiring, settled_graph, wiring_of
 
 INSTALL = workspace.ensure_built()
 if (INSTALL / 'turtlesim/share/turtlesim/HEADLESS').is_file():  # else a real one is installed
@@ -70,22 +69,6 @@ def robot_wiring(robot: str) -> Wiring:
         f'{ns}/safety_stop': ((f'{ns}/safety_monitor',), (f'{ns}/mission_recorder',)),
         f'{ns}/status': ((f'{ns}/patrol_planner',), (f'{ns}/mission_recorder',)),
     }
-
-
-def _settled_graph(expected: Wiring) -> labkit.GraphSnapshot:
-    """The graph once the robots' topics are wired as expected (or as it is when the
-    hang guard runs out, for the assertion to show).  Other topics are left out: the
-    launch's own node (/launch_ros_<pid>) listens to each recorder's transition_event."""
-    deadline = time.monotonic() + HANG_GUARD
-    while True:
-        snapshot = labkit.graph()
-        if _ours(snapshot, expected) == expected or time.monotonic() > deadline:
-            return snapshot
-        time.sleep(0.2)
-
-
-def _ours(snapshot: labkit.GraphSnapshot, expected: Wiring) -> Wiring:
-    return {name: ends for name, ends in wiring(snapshot).items() if name in expected}
 
 
 def _start(launch_file: str, ros_env: dict[str, str], **arguments: str) -> labkit.Background:
@@ -161,7 +144,9 @@ def test_capstone_starts_two_robots_that_patrol(ros_env, client):
         for robot in robots:  # the recorder subscribes only once it is active
             run.wait_for_output(_node_log(robot, 'mission_recorder',
                                           'Active: recording the mission'), HANG_GUARD)
-        snapshot = _settled_graph(expected)
+        # Other topics are left out: the launch's own node (/launch_ros_<pid>)
+        # listens to each recorder's transition_event.
+        snapshot = settled_graph(expected, HANG_GUARD, only_expected=True)
         params = {node: labkit.read_parameters(node) for node in (
             '/turtle1/controller', '/turtle2/controller', '/turtle1/patrol_planner',
             '/turtle2/patrol_planner', '/turtle2/wall_sensor', '/turtle1/safety_monitor')}
@@ -180,7 +165,7 @@ def test_capstone_starts_two_robots_that_patrol(ros_env, client):
     system = [node for node in snapshot.nodes
               if not node.startswith('/launch_ros_') and node != '/turtlesim_test_client']
     assert sorted(system) == sorted(expected_nodes), str(snapshot)
-    assert _ours(snapshot, expected) == expected, str(snapshot)
+    assert wiring_of(snapshot, expected, only_expected=True) == expected, str(snapshot)
     for robot in robots:  # a lifecycle node publishes its transitions; launch listens
         assert snapshot.publishers(f'/{robot}/mission_recorder/transition_event') == (
             f'/{robot}/mission_recorder',), str(snapshot)
