@@ -125,7 +125,7 @@ def _own_routes(verdict: Verdict, run: LaunchProbe, robots: tuple[str, ...]) -> 
 
 def check_my_capstone(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Exactly the robots named, each in its namespace, on its own route, its turtle spawned."""
-    if not requirements.files_installed(verdict, package, ('launch/' + FILE,)):
+    if not requirements.files_installed(verdict, package):
         return verdict
     for arguments, robots in CASES:
         expected = (SIMULATOR, *(f'/{robot}/{node}' for robot in robots for node in ROBOT_NODES))
