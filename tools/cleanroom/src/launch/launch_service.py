@@ -6,7 +6,8 @@ import logging
 import signal
 import threading
 import traceback
-from collections.abc import Iterable
+from collections.abc import Coroutine, Iterable
+from typing import Any
 
 from . import logging as launch_logging
 from .event import Event
@@ -56,6 +57,8 @@ class LaunchService:
         self.__running = False
         self.__sigint_count = 0
         self.__sigterm_count = 0
+        self.__loop: asyncio.AbstractEventLoop | None = None
+        self.__loop_thread: int | None = None
 
     @property
     def context(self) -> LaunchContext:
@@ -67,6 +70,11 @@ class LaunchService:
         """Kept for API compatibility; the service has no single task."""
         return None
 
+    @property
+    def event_loop(self) -> asyncio.AbstractEventLoop | None:
+        """The event loop of the thread running the service; None when it is not running."""
+        return self.__loop
+
     def emit_event(self, event: Event) -> None:
         """Queue an event (thread-safe)."""
         self.__context.emit_event_sync(event)
@@ -75,14 +83,28 @@ class LaunchService:
         """Queue a launch description to be visited (thread-safe)."""
         self.__context.emit_event_sync(IncludeLaunchDescription(launch_description))
 
-    def shutdown(self, force_sync: bool = False) -> None:
-        """Ask the launch to shut down (thread-safe).
+    def shutdown(self, force_sync: bool = False) -> Coroutine[Any, Any, None] | None:
+        """Ask the launch to shut down; thread-safe.
 
-        The Shutdown event is queued and handled by the running loop.
-        `force_sync` is Jazzy's parameter; its effect is not described in the
-        documentation the clean room is written from (issue 13), so it
-        changes nothing here rather than guess at it.
+        From any other thread, or with `force_sync`, the Shutdown event is
+        queued at once and None is returned.  Called on the thread of the
+        running event loop (from the launch's own coroutines and callbacks)
+        without `force_sync`, it returns a coroutine to await, which queues
+        the event: as in Jazzy, whose `shutdown` "optionally returns a
+        coroutine" (ros2/launch#603).  A loop callback that cannot await, such
+        as a signal handler, passes `force_sync=True`.
         """
+        loop = self.__loop
+        on_loop_thread = loop is not None and self.__loop_thread == threading.get_ident()
+        if on_loop_thread and not force_sync:
+            return self.__queue_shutdown()
+        self.__emit_shutdown()
+        return None
+
+    async def __queue_shutdown(self) -> None:
+        self.__emit_shutdown()
+
+    def __emit_shutdown(self) -> None:
         self.__context.emit_event_sync(
             Shutdown(reason='LaunchService.shutdown() called', due_to_sigint=False))
 
@@ -107,6 +129,7 @@ class LaunchService:
         if self.__debug:
             loop.set_debug(True)
         self.__context._set_asyncio_loop(loop)
+        self.__loop, self.__loop_thread = loop, threading.get_ident()
         installed = self.__install_signal_handlers(loop)
         try:
             await self.__main_loop(shutdown_when_idle)
@@ -116,6 +139,7 @@ class LaunchService:
                 loop.remove_signal_handler(signum)
             self.__context._close_spawner()
             self.__context._set_asyncio_loop(None)
+            self.__loop = self.__loop_thread = None
             self.__running = False
         return self.__return_code
 
