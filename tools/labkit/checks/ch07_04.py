@@ -18,9 +18,11 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
+import yaml
+
 from labkit.errors import LabkitError
 from labkit.grading import requirements, spec_run
-from labkit.grading.exercise import Exercise
+from labkit.grading.exercise import SNIPPETS, Exercise
 from labkit.grading.launch_probe import LaunchProbe, probe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
@@ -54,24 +56,39 @@ class Value:
     source: str
 
 
-ROUTES = {
-    'turtle1': [3.0, 3.0, 8.0, 3.0, 8.0, 8.0, 3.0, 8.0],
-    'turtle2': [5.5, 9.5, 9.5, 5.5, 5.5, 1.5, 1.5, 5.5],
-    'turtle3': [9.0, 8.0, 2.5, 8.0, 2.5, 3.0, 9.0, 3.0],
-}
-DAY_SPEEDS = {'turtle1': 1.0, 'turtle2': 1.5, 'turtle3': 0.6}
-STOP_DISTANCES = {'turtle1': 0.8, 'turtle2': 0.8, 'turtle3': 1.2}
+CAPSTONE_CONFIG = SNIPPETS / 'capstone_bringup' / 'config'
+#: What the brief's site layer (N2) makes of the inspector.
+INSPECTOR_VALUES = {'waypoints': [9.0, 8.0, 2.5, 8.0, 2.5, 3.0, 9.0, 3.0],
+                    'max_linear': 0.6, 'stop_distance': 1.2}
+
+
+def capstone_value(robot: str, node: str, name: str) -> Any:
+    """A robot's parameter as the capstone configures it: config/defaults.yaml, then
+    config/<robot>.yaml over it (robot.launch.py's two layers)."""
+    value = None
+    for layer in ('defaults.yaml', f'{robot}.yaml'):
+        sections = yaml.safe_load((CAPSTONE_CONFIG / layer).read_text()) or {}
+        value = sections.get(f'/**/{node}', {}).get('ros__parameters', {}).get(name, value)
+    return value
+
+
+def day_value(robot: str, node: str, name: str) -> Any:
+    """The brief's day-shift value: the inspector's layer for turtle3, else the capstone's."""
+    return INSPECTOR_VALUES[name] if robot == INSPECTOR else capstone_value(robot, node, name)
 
 
 def expected(robot: str, shift: str) -> tuple[Value, ...]:
     """What N2-N4 fix for `robot` in `shift`."""
     own = ("the inspector's site layer (N2)" if robot == INSPECTOR
            else f"the capstone's config of {robot} (N3)")
-    speed = DAY_SPEEDS[robot] if shift == 'day' else DAY_SPEEDS[robot] / 2
-    speed_source = own if shift == 'day' else f'the night layer: half of {DAY_SPEEDS[robot]} (N4)'
-    return (Value('patrol_planner', 'waypoints', ROUTES[robot], own),
+    day_speed = day_value(robot, 'controller', 'max_linear')
+    speed = day_speed if shift == 'day' else day_speed / 2
+    speed_source = own if shift == 'day' else f'the night layer: half of {day_speed} (N4)'
+    return (Value('patrol_planner', 'waypoints', day_value(robot, 'patrol_planner', 'waypoints'),
+                  own),
             Value('controller', 'max_linear', speed, speed_source),
-            Value('safety_monitor', 'stop_distance', STOP_DISTANCES[robot], own))
+            Value('safety_monitor', 'stop_distance',
+                  day_value(robot, 'safety_monitor', 'stop_distance'), own))
 
 
 PARAMETER_NODES = tuple(sorted({f'/{robot}/{value.node}' for robot in ROBOTS
@@ -196,7 +213,7 @@ def _spec_catches_defect(verdict: Verdict, package: StudentPackage) -> None:
 
 def check_night_shift(package: StudentPackage, verdict: Verdict) -> Verdict:
     """Day and night shift as the brief says, a bad shift refused, the student's spec sound."""
-    files = ('launch/' + LAUNCH_FILE, *LAYERS)
+    files = ('launch/' + LAUNCH_FILE, *LAYERS)  # not SPEC: it is read from src/, not installed
     if not requirements.files_installed(verdict, package, files):
         return verdict
     day = _shift(package, 'day')
