@@ -25,7 +25,7 @@ from textbook import paths
 from textbook.myst import fences
 
 from ._launch_log import ENDED, STARTED
-from ._wiring import Wiring, settled_graph, wiring
+from ._wiring import Wiring, nodes_in, settled_graph, wiring_of
 
 LESSON = paths.LESSONS / 'ch06/L3/13_configuration_management.md'
 PACKAGE = 'rover_config'
@@ -100,7 +100,7 @@ def _run_and_read(case: Case, env: dict[str, str], cwd: Path) -> tuple[str, dict
     with labkit.launch(PACKAGE, 'rover.launch.py', launch_arguments=case.arguments, env=env,
                        cwd=cwd) as run:
         run.wait_for_nodes(nodes, timeout=HANG_GUARD)
-        snapshot = settled_graph(_wiring_of(case), HANG_GUARD)
+        snapshot = settled_graph(_wiring_of(case), HANG_GUARD, namespace=f'/{case.robot}')
         parameters = {node: labkit.read_parameters(f'/{case.robot}/{node}') for node in NODES}
         got = {(node, name): parameters[node].get(name) for node, name in case.expected}
         assert run.running, run.output()
@@ -112,8 +112,10 @@ def _assert_system(case: Case, output: str, got: dict, snapshot: Any, exit_code:
     assert 'process has died' not in output, output
     started = [m.group(1) for line in output.splitlines() if (m := STARTED.match(line))]
     assert sorted(started) == sorted(NODES), output
-    assert sorted(snapshot.nodes) == sorted(f'/{case.robot}/{node}' for node in NODES), output
-    assert wiring(snapshot) == _wiring_of(case), str(snapshot)
+    # Only this launch's namespace: see _wiring.in_namespace.
+    namespace = f'/{case.robot}'
+    assert nodes_in(snapshot, namespace) == sorted(f'{namespace}/{node}' for node in NODES), output
+    assert wiring_of(snapshot, {}, namespace=namespace) == _wiring_of(case), str(snapshot)
     assert _typed(got) == _typed(case.expected)
     ended = [m.group(1) for line in output.splitlines() if (m := ENDED.match(line))]
     assert exit_code == 0 and sorted(ended) == sorted(started), output
