@@ -215,3 +215,16 @@ def test_a_capstone_node_stopped_while_it_starts_exits_cleanly(ros_env, program,
     assert shown in result.stderr
     if code == 0:
         assert 'Traceback' not in result.stderr, result.stderr
+
+
+def test_spawner_without_a_turtle_name_refuses_with_exit_code_1(ros_env):
+    """In the root namespace there is no name to take, so it must say so and stop."""
+    spawner = NodeProcess(ros_env, 'capstone_robot', 'spawner')
+    try:
+        code = spawner.proc.wait(timeout=STARTUP_LIMIT)
+    finally:
+        spawner.proc.kill()
+    spawner._reader.join(timeout=STARTUP_LIMIT)
+    assert code == 1, spawner.output
+    assert 'No turtle name: set turtle_name or start me in a namespace' in spawner.output
+    assert 'Traceback' not in spawner.output, spawner.output
