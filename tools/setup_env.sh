@@ -60,7 +60,8 @@ if [ -z "${USE_SYSTEM_ROS:-}" ]; then
 fi
 
 stamp_input="$(cat "$root/requirements/lock.txt" "$root/requirements/base.in" \
-  "$root/pyproject.toml" "$root/tools/cleanroom/pyproject.toml" "$0"; echo "system_ros=$USE_SYSTEM_ROS")"
+  "$root/pyproject.toml" "$root/tools/cleanroom/pyproject.toml" \
+  "$root/tools/rclhelpers/pyproject.toml" "$0"; echo "system_ros=$USE_SYSTEM_ROS")"
 stamp="$(printf '%s' "$stamp_input" | sha256sum | cut -c1-16)"
 if [ -f "$venv/.setup-stamp" ] && [ "$(cat "$venv/.setup-stamp")" = "$stamp" ]; then
   exit 0
@@ -78,6 +79,9 @@ else
 fi
 pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 "${pip[@]}" install -c "$root/requirements/lock.txt" -r "$reqs"
+# rclhelpers (tools/rclhelpers) first: the root and the clean room depend on
+# it, and it is on no index.
+"${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/rclhelpers"
 "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root"
 if [ "$USE_SYSTEM_ROS" = 0 ]; then
   "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/cleanroom"

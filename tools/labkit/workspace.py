@@ -31,7 +31,7 @@ Do this once, in a terminal:
     git clone {REPOSITORY}
     python3 -m venv --system-site-packages ~/textbook-venv
     source ~/textbook-venv/bin/activate
-    pip install ./ros2-launch-textbook jupyterlab
+    pip install ./ros2-launch-textbook/tools/rclhelpers ./ros2-launch-textbook jupyterlab
     mkdir -p ~/ros2_ws/src
     cp -r ros2-launch-textbook/snippets/* ~/ros2_ws/src/
     cd ~/ros2_ws && colcon build              # --packages-skip turtlesim if ROS has turtlesim
