@@ -154,10 +154,12 @@ def test_require_workspace_names_only_what_is_missing(ros_env, monkeypatch):
     assert len(missing) == 1 and '`my_robot_pkg`' in missing[0], missing
 
 
-# labkit as `pip install` leaves it: a package folder with no repository around it.
+# labkit as `pip install` leaves it: a package folder with no repository around it,
+# next to rclhelpers (the README's pip line installs both).
 OUTSIDE_SCRIPT = textwrap.dedent("""
-    import labkit, labkit.checks
+    import labkit, labkit.checks, rclhelpers
     print('labkit from', labkit.__file__)
+    print('rclhelpers from', rclhelpers.__file__)
     exercise = sorted(labkit.checks.EXERCISES)[0]
     try:
         labkit.exercises.setup(exercise)
@@ -168,8 +170,8 @@ OUTSIDE_SCRIPT = textwrap.dedent("""
 
 def _labkit_outside(tmp_path: Path) -> tuple[Path, dict[str, str]]:
     site = tmp_path / 'site-packages'
-    shutil.copytree(paths.TOOLS / 'labkit', site / 'labkit',
-                    ignore=shutil.ignore_patterns('__pycache__'))
+    for package in (paths.TOOLS / 'labkit', paths.TOOLS / 'rclhelpers' / 'src' / 'rclhelpers'):
+        shutil.copytree(package, site / package.name, ignore=shutil.ignore_patterns('__pycache__'))
     env = {k: v for k, v in os.environ.items() if k != 'LABKIT_SNIPPETS'}
     env['PYTHONPATH'] = str(site)
     return site, env
@@ -183,6 +185,7 @@ def test_labkit_outside_the_repository_explains_where_the_exercise_files_come_fr
                             capture_output=True, text=True, timeout=120)
     assert result.returncode == 0, result.stderr
     assert f'labkit from {site}' in result.stdout
+    assert f'rclhelpers from {site}' in result.stdout
     assert 'ERROR:' in result.stdout
     assert 'LABKIT_SNIPPETS' in result.stdout and 'cp -r' in result.stdout
     assert not (ws / 'src' / 'my_ws_exercises').exists()

@@ -19,6 +19,8 @@ import time
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
+from rclhelpers import is_hidden
+
 from labkit import observer
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
 from labkit.watchdog import group_members
@@ -143,7 +145,7 @@ class Background:
             present = observer.node_names(include_hidden=True)
             missing = [name for name in wanted if name not in present]
             if not missing:
-                return [name for name in present if not observer.is_hidden(name)]
+                return [name for name in present if not is_hidden(name)]
             if self.poll() is not None:
                 self.stop()
                 raise ProcessExitedError(self._explain(
@@ -151,7 +153,7 @@ class Background:
                     f'{_names(missing)}.'))
             if time.monotonic() >= deadline:
                 self.stop()
-                visible = [name for name in present if not observer.is_hidden(name)]
+                visible = [name for name in present if not is_hidden(name)]
                 raise NodesNotFoundError(self._explain(
                     f'Timed out after {timeout:g} s waiting for {_names(missing)} from '
                     f'`{self.command}`.\nNodes in the graph: '

@@ -11,6 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rcl_interfaces.srv import GetParameters, ListParameters
+from rclhelpers import is_hidden
 from rclpy.parameter import parameter_value_to_python
 
 from labkit import observer
@@ -96,10 +97,10 @@ def graph(include_hidden: bool = False, include_default_topics: bool = False) ->
     node = observer.observer().node
     endpoints = observer.topic_endpoints(node)
     visible = {name for name in observer.live_node_names(node, endpoints)
-               if include_hidden or not observer.is_hidden(name)}
+               if include_hidden or not is_hidden(name)}
     topics = {}
     for topic, (types, publishers, subscribers) in sorted(endpoints.items()):
-        if not include_hidden and observer.is_hidden(topic):
+        if not include_hidden and is_hidden(topic):
             continue
         if not include_default_topics and topic in DEFAULT_TOPICS:
             continue
@@ -110,7 +111,7 @@ def graph(include_hidden: bool = False, include_default_topics: bool = False) ->
         topics[topic] = Topic(topic, tuple(types), tuple(pubs), tuple(subs))
     services = {service: tuple(types)
                 for service, types in sorted(node.get_service_names_and_types())
-                if include_hidden or not observer.is_hidden(service)}
+                if include_hidden or not is_hidden(service)}
     return GraphSnapshot(tuple(sorted(visible)), topics, services)
 
 

@@ -18,8 +18,8 @@ import time
 from typing import Any
 
 import rclpy
+from rclhelpers import call_service, full_name, is_hidden
 from rclpy.context import Context
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 
@@ -53,27 +53,8 @@ class Observer:
         self.context.try_shutdown()
 
     def call(self, srv_type: Any, service: str, request: Any, timeout: float = 5.0) -> Any:
-        """Call a service once; returns the response or None if nobody answered.
-
-        Nothing spins the observer's node in the background, so rclpy's
-        `Client.call()` (which waits for another thread's executor) would only
-        time out: the call is spun here, on a temporary executor, with rclpy's
-        own helpers.  The clean room's `ros2` has the same few lines
-        (ros2_cleanroom.cli_node.call_service) on purpose (issue 13): labkit
-        must run on a real ROS 2, where the clean room is not installed, and
-        the clean room may not import labkit.
-        """
-        client = self.node.create_client(srv_type, service)
-        try:
-            if not client.wait_for_service(timeout_sec=timeout):
-                return None
-            future = client.call_async(request)
-            with SingleThreadedExecutor(context=self.context) as executor:
-                rclpy.spin_until_future_complete(self.node, future, executor=executor,
-                                                 timeout_sec=timeout)
-            return future.result() if future.done() else None
-        finally:
-            self.node.destroy_client(client)
+        """Call a service once from the observer's node; None if nobody answered."""
+        return call_service(self.node, srv_type, service, request, timeout)
 
 
 def observer() -> Observer:
@@ -92,16 +73,6 @@ def _close_observer() -> None:
         if _observer is not None:
             _observer.close()
             _observer = None
-
-
-def full_name(name: str, namespace: str) -> str:
-    """`/ns` + `name` -> `/ns/name`."""
-    return namespace.rstrip('/') + '/' + name
-
-
-def is_hidden(name: str) -> bool:
-    """ROS hides names with a token starting with `_` (like labkit's own node)."""
-    return any(token.startswith('_') for token in name.split('/') if token)
 
 
 def topic_endpoints(node: Node) -> dict[str, tuple[list[str], set[str], set[str]]]:

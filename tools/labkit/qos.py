@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from rclhelpers import full_name, is_hidden
 from rclpy.qos import QoSCompatibility, QoSProfile, qos_check_compatible
 
 from labkit import observer
@@ -52,9 +53,9 @@ def endpoints(topic: str) -> tuple[list[Endpoint], list[Endpoint]]:
 
 
 def _visible(infos: list) -> list[Endpoint]:
-    found = [Endpoint(observer.full_name(info.node_name, info.node_namespace), info.qos_profile)
+    found = [Endpoint(full_name(info.node_name, info.node_namespace), info.qos_profile)
              for info in infos if info.node_name != observer.UNKNOWN_NODE]
-    return sorted((e for e in found if not observer.is_hidden(e.node)), key=lambda e: e.node)
+    return sorted((e for e in found if not is_hidden(e.node)), key=lambda e: e.node)
 
 
 def mismatches(topic: str) -> list[Mismatch]:

@@ -11,11 +11,10 @@ import contextlib
 import os
 import time
 from collections.abc import Callable, Iterator
-from typing import Any
 
 import rclpy
+from rclhelpers import full_name, is_hidden
 from rclpy.context import Context
-from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
 # How long discovery takes.  Measured with Fast DDS and
@@ -101,23 +100,6 @@ def wait_for_graph(node: Node, until: Callable[[], bool] | None = None,
         time.sleep(POLL)
 
 
-def full_name(name: str, namespace: str) -> str:
-    """`/ns` + `name` -> `/ns/name` (the root namespace gives `/name`)."""
-    return namespace.rstrip('/') + '/' + name
-
-
-def split_full_name(full: str) -> tuple[str, str]:
-    """`/ns/name` -> (`name`, `/ns`); a name without a slash is in `/`."""
-    full = full if full.startswith('/') else '/' + full
-    namespace, _, name = full.rpartition('/')
-    return name, namespace or '/'
-
-
-def is_hidden(name: str) -> bool:
-    """ROS hides any node, topic or service with a name token starting with `_`."""
-    return any(token.startswith('_') for token in name.split('/') if token)
-
-
 def node_names(node: Node, include_hidden: bool = False) -> list[str]:
     """Full names of the nodes in the graph, sorted, hidden ones left out by default."""
     names = {full_name(n, ns) for n, ns in node.get_node_names_and_namespaces()}
@@ -138,28 +120,3 @@ def wait_for_node(node: Node, target: str, include_hidden: bool = False,
     """Wait until the named node is discovered (or time runs out); True if it was."""
     wait_until(node, lambda: target in node_names(node, include_hidden=True), max_wait)
     return target in node_names(node, include_hidden=include_hidden)
-
-
-def call_service(node: Node, srv_type: Any, name: str, request: Any,
-                 timeout: float = 5.0) -> Any | None:
-    """Call a service once and return its response, or None if nobody answered.
-
-    Nothing spins this node in the background, so rclpy's `Client.call()`
-    (which waits for another thread's executor) would only time out: the
-    call is spun here, on a temporary executor, with rclpy's own helpers.
-    labkit's Observer.call is the same few lines on purpose (issue 13): labkit
-    runs on a real ROS 2, where the clean room is not installed, and the clean
-    room may not import labkit, so the only home both could share is a third
-    distribution, which would cost more than these lines.
-    """
-    client = node.create_client(srv_type, name)
-    try:
-        if not client.wait_for_service(timeout_sec=timeout):
-            return None
-        future = client.call_async(request)
-        with SingleThreadedExecutor(context=node.context) as executor:
-            rclpy.spin_until_future_complete(node, future, executor=executor,
-                                             timeout_sec=timeout)
-        return future.result() if future.done() else None
-    finally:
-        node.destroy_client(client)

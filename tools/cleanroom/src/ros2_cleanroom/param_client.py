@@ -3,9 +3,8 @@ from __future__ import annotations
 
 from rcl_interfaces.msg import Parameter, ParameterValue, SetParametersResult
 from rcl_interfaces.srv import GetParameters, ListParameters, SetParameters
+from rclhelpers import call_service
 from rclpy.node import Node
-
-from ros2_cleanroom.cli_node import call_service
 
 
 class ParameterServiceError(RuntimeError):

@@ -9,7 +9,8 @@ from launch.events import Shutdown, matches_action
 from launch_ros.actions import LifecycleNode, LifecycleTransition
 from launch_ros.event_handlers import OnStateTransition
 from launch_ros.events.lifecycle import ChangeState, StateTransition, matches_node_name
-from ros2_cleanroom.cli_node import call_service, cli_node
+from rclhelpers import call_service
+from ros2_cleanroom.cli_node import cli_node
 
 PKG = 'lr_test_pkg'
 T = lifecycle_msgs.msg.Transition
@@ -17,7 +18,7 @@ T = lifecycle_msgs.msg.Transition
 
 def query_state(service: str) -> str:
     """Ask get_state from a separate rclpy context, as an outside tool would: through
-    the clean room's own service-call helper (one copy, issue 13)."""
+    rclhelpers.call_service, the one copy labkit and the clean room share (issue 13)."""
     with cli_node('lr_state_probe') as node:
         response = call_service(node, lifecycle_msgs.srv.GetState, service,
                                 lifecycle_msgs.srv.GetState.Request(), timeout=10.0)

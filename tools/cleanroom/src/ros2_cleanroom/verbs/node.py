@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 
+from rclhelpers import is_hidden, split_full_name
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
     get_action_server_names_and_types_by_node,
@@ -10,7 +11,7 @@ from rclpy.action.graph import (
 from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
-from ros2_cleanroom.cli_node import is_hidden, node_names, split_full_name
+from ros2_cleanroom.cli_node import node_names
 from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fail, run
 
 

@@ -9,11 +9,11 @@ from collections.abc import Callable
 from typing import Any
 
 import yaml
+from rclhelpers import is_hidden
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
-from ros2_cleanroom.cli_node import is_hidden
 from ros2_cleanroom.interfaces import (
     import_interface,
     message_to_csv,
