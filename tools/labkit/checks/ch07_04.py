@@ -91,8 +91,11 @@ def expected(robot: str, shift: str) -> tuple[Value, ...]:
                   day_value(robot, 'safety_monitor', 'stop_distance'), own))
 
 
-PARAMETER_NODES = tuple(sorted({f'/{robot}/{value.node}' for robot in ROBOTS
-                                for value in expected(robot, 'day')}))
+#: The nodes `expected` gives values to.  Named here, not derived from `expected`: that
+#: reads the capstone's config, which a labkit installed outside the repository only
+#: finds once the snippets are in the workspace (as the check runs, not at import).
+VALUE_NODES = ('patrol_planner', 'controller', 'safety_monitor')
+PARAMETER_NODES = tuple(sorted(f'/{robot}/{node}' for robot in ROBOTS for node in VALUE_NODES))
 
 
 def read_values(snapshot: GraphSnapshot) -> dict[str, dict[str, Any] | str]:
