@@ -11,6 +11,7 @@ from collections.abc import Iterator
 
 import pytest
 from domain_coordinator.impl import PORT_BASE
+from rclhelpers import domains
 from textbook import isolation, reaper
 
 # Another process of this machine holding a lease, as a parallel test run or lesson would.
@@ -73,7 +74,7 @@ def test_a_full_range_waits_until_an_id_is_released(holder, monkeypatch):
         waiting.set()  # every ID of the range was taken: the allocator waits
         time.sleep(seconds)
 
-    monkeypatch.setattr(isolation, 'time', types.SimpleNamespace(monotonic=time.monotonic,
+    monkeypatch.setattr(domains, 'time', types.SimpleNamespace(monotonic=time.monotonic,
                                                                  sleep=sleep))
     leased: list[isolation.DomainLease] = []
     waiter = threading.Thread(target=lambda: leased.append(

@@ -1,67 +1,18 @@
 """A private ROS_DOMAIN_ID for a test run whose caller did not choose one.
 
-IDs 1-89 (CONTRIBUTING.md) come from ROS 2's own allocator,
-``domain_coordinator``: a lease binds TCP port 32768 + ID, so no two live
-holders on this machine share an ID and the ID comes back when the holder
-releases it or dies.  The book's tools lease through the same library
-(tools/textbook/isolation.py); this distribution does not import them.
+The ID is leased from ROS 2's own allocator, ``domain_coordinator``, through
+rclhelpers.domains, which the book's tools lease through too (one allocator,
+so no two runs on this machine share an ID).
 """
 from __future__ import annotations
 
 import contextlib
-import itertools
 import os
-import time
 from collections.abc import Iterator
 
-import domain_coordinator
-from domain_coordinator.impl import PORT_BASE
+from rclhelpers.domains import DOMAIN_IDS, DomainLease, lease_domain
 
-DOMAIN_IDS = range(1, 90)
-
-
-class DomainLease:
-    """One ROS domain ID held until :meth:`release` (or ``with`` exit)."""
-
-    def __init__(self, domain_id: int, hold: contextlib.ExitStack) -> None:
-        self.domain_id = domain_id
-        self._hold = hold
-
-    def release(self) -> None:
-        """Give the ID back; safe to repeat."""
-        self._hold.close()
-
-    def __enter__(self) -> DomainLease:
-        return self
-
-    def __exit__(self, *exc: object) -> None:
-        self.release()
-
-
-def _try_lease(ids: range) -> DomainLease | None:
-    hold = contextlib.ExitStack()
-    candidates = itertools.cycle(ids)
-    try:
-        # Left with no exception on release: an error raised while the lease
-        # is held never reaches the library's generator.
-        domain_id = hold.enter_context(
-            domain_coordinator.domain_id(selector=lambda: next(candidates)))
-    except RuntimeError:  # 'Failed to get a unique ROS domain ID'
-        return None
-    return DomainLease(domain_id, hold)
-
-
-def lease_domain(timeout: float = 60.0, ids: range = DOMAIN_IDS) -> DomainLease:
-    """Lease a free ID of ``ids``, waiting while all are held; RuntimeError after ``timeout``."""
-    deadline = time.monotonic() + timeout
-    while (lease := _try_lease(ids)) is None:
-        if time.monotonic() >= deadline:
-            raise RuntimeError(
-                f'no free ROS_DOMAIN_ID in {ids.start}-{ids.stop - 1}: every one is held by '
-                f'another run on this machine (domain_coordinator binds TCP port {PORT_BASE} '
-                f'+ ID: ports {PORT_BASE + ids.start}-{PORT_BASE + ids.stop - 1} are all in use)')
-        time.sleep(0.5)
-    return lease
+__all__ = ['DOMAIN_IDS', 'DomainLease', 'isolated_domain', 'lease_domain']
 
 
 @contextlib.contextmanager

@@ -40,9 +40,9 @@ def test_an_id_held_elsewhere_is_skipped_and_comes_back_when_its_holder_dies(hol
     with pytest.raises(RuntimeError) as error:
         lease_domain(timeout=0, ids=range(held, held + 1))
     assert str(error.value) == (
-        f'no free ROS_DOMAIN_ID in {held}-{held}: every one is held by another run on this '
-        f'machine (domain_coordinator binds TCP port 32768 + ID: ports {32768 + held}-'
-        f'{32768 + held} are all in use)')
+        f'no free ROS domain: IDs {held}-{held} are all held by other runs on this machine '
+        f'(domain_coordinator binds TCP port 32768 + ID: ports {32768 + held}-'
+        f'{32768 + held} are all in use; too many runs at once?)')
     proc.kill()
     proc.wait()
     with lease_domain(timeout=0, ids=range(held, held + 1)) as lease:
