@@ -114,3 +114,21 @@ def test_run_builds_ros_args(ros_env):
         node.wait_for_nodes(['/front_sensor'])
         assert labkit.read_parameters('/front_sensor')['publish_rate'] == 5.0
     assert node.returncode == 0
+
+
+def test_stop_also_ends_children_that_outlive_the_command(ros_env, tmp_path):
+    """The command dies of Ctrl-C; its child ignores it and is stopped afterwards."""
+    script = tmp_path / 'parent.py'
+    script.write_text('import subprocess, sys, time\n'
+                      'child = subprocess.Popen([sys.executable, "-c", "import signal, time; '
+                      'signal.signal(signal.SIGINT, signal.SIG_IGN); print(flush=True); '
+                      'time.sleep(600)"], stdout=subprocess.PIPE)\n'
+                      'child.stdout.readline()\n'
+                      'print("ready", flush=True)\n'
+                      'time.sleep(600)\n')
+    background = labkit.start(['python3', str(script)], env=ros_env)
+    background.wait_for_output('ready')
+    members = [proc.pid for proc in group_members(background.pid)]
+    assert len(members) == 2
+    assert background.stop(sigint_grace=5, sigterm_grace=5) == -2  # Ctrl-C ended the command
+    assert _gone(members) == []

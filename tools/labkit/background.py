@@ -23,7 +23,7 @@ from rclhelpers import is_hidden
 
 from labkit import observer
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
-from labkit.watchdog import group_members
+from labkit.watchdog import stop_group
 
 WATCHDOG = str(Path(__file__).with_name('watchdog.py'))
 #: Seconds given to each signal of the shutdown sequence before escalating.
@@ -224,13 +224,7 @@ def _signal_group(pgid: int, sig: int) -> None:
 
 def _stop_stragglers(pgid: int, grace: float = 2.0) -> None:
     """Children that outlived the command (it exited first) get SIGTERM, then SIGKILL."""
-    for sig in (signal.SIGTERM, signal.SIGKILL):
-        if not group_members(pgid):
-            return
-        _signal_group(pgid, sig)
-        deadline = time.monotonic() + grace
-        while group_members(pgid) and time.monotonic() < deadline:
-            time.sleep(0.05)
+    stop_group(pgid, ((signal.SIGTERM, grace), (signal.SIGKILL, grace)))
 
 
 @atexit.register
