@@ -7,14 +7,20 @@ the last test keeps a second copy from coming back.
 from __future__ import annotations
 
 import re
+import signal
+import subprocess
+import sys
 import threading
+import time
 from collections.abc import Iterator
 from pathlib import Path
 
+import psutil
 import pytest
 import rclpy
 from rcl_interfaces.srv import GetParameters, ListParameters
-from rclhelpers import call_service, full_name, is_hidden, split_full_name
+from rclhelpers.names import full_name, is_hidden, split_full_name
+from rclhelpers.services import call_service
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
@@ -113,9 +119,11 @@ def test_call_service_gives_none_when_nobody_offers_the_service(client_node):
 
 # A module-level definition of one of the helpers, or rclpy's spin-a-future
 # call, anywhere in tools/ but rclhelpers is a second copy.
-# So is a lease taken from domain_coordinator (rclhelpers.domains).
+# So is a lease taken from domain_coordinator (rclhelpers.domains) or a parent-death
+# signal set up (rclhelpers.processes).
 COPY = re.compile(r'^def (full_name|split_full_name|is_hidden|call_service)\(|'
-                  r'spin_until_future_complete|domain_coordinator\.domain_id\(', re.MULTILINE)
+                  r'spin_until_future_complete|domain_coordinator\.domain_id\(|PR_SET_PDEATHSIG = ',
+                  re.MULTILINE)
 
 
 def second_copies(tools: Path) -> list[str]:
@@ -148,3 +156,32 @@ def test_a_second_copy_is_found(tmp_path):
     assert second_copies(tmp_path) == ['labkit/observer.py:4: def is_hidden(',
                                        'labkit/observer.py:7: spin_until_future_complete',
                                        'labkit/observer.py:8: domain_coordinator.domain_id(']
+
+
+# A parent that starts a child with die_with_parent, says the child's pid and waits.
+PARENT = """
+import os, signal, subprocess, sys
+from rclhelpers.processes import die_with_parent
+me = os.getpid()
+child = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'],
+                         preexec_fn=lambda: die_with_parent(me, signal.SIGTERM))
+print(child.pid, flush=True)
+child.wait()
+"""
+
+
+def test_die_with_parent_ends_the_child_when_its_parent_is_killed():
+    parent = subprocess.Popen([sys.executable, '-c', PARENT], stdout=subprocess.PIPE, text=True)
+    child = psutil.Process(int(parent.stdout.readline()))
+    try:
+        parent.kill()  # SIGKILL: the parent can clean up nothing itself
+        parent.wait()
+        deadline = time.monotonic() + 30  # a hang guard, not a speed limit
+        while child.is_running() and child.status() != psutil.STATUS_ZOMBIE \
+                and time.monotonic() < deadline:
+            time.sleep(0.05)
+        gone = not child.is_running() or child.status() == psutil.STATUS_ZOMBIE
+    finally:
+        if child.is_running():
+            child.send_signal(signal.SIGKILL)
+    assert gone, 'the child outlived its killed parent'

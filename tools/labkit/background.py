@@ -19,7 +19,7 @@ import time
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-from rclhelpers import is_hidden
+from rclhelpers.names import is_hidden
 
 from labkit import observer
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError

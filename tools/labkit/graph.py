@@ -11,7 +11,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from rcl_interfaces.srv import GetParameters, ListParameters
-from rclhelpers import is_hidden
+from rclhelpers.names import is_hidden
 from rclpy.parameter import parameter_value_to_python
 
 from labkit import observer

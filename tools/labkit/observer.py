@@ -18,7 +18,8 @@ import time
 from typing import Any
 
 import rclpy
-from rclhelpers import call_service, full_name, is_hidden
+from rclhelpers.names import full_name, is_hidden
+from rclhelpers.services import call_service
 from rclpy.context import Context
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions

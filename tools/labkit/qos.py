@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from rclhelpers import full_name, is_hidden
+from rclhelpers.names import full_name, is_hidden
 from rclpy.qos import QoSCompatibility, QoSProfile, qos_check_compatible
 
 from labkit import observer

@@ -13,7 +13,7 @@ import time
 from collections.abc import Callable, Iterator
 
 import rclpy
-from rclhelpers import full_name, is_hidden
+from rclhelpers.names import full_name, is_hidden
 from rclpy.context import Context
 from rclpy.node import Node
 

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from rcl_interfaces.msg import Parameter, ParameterValue, SetParametersResult
 from rcl_interfaces.srv import GetParameters, ListParameters, SetParameters
-from rclhelpers import call_service
+from rclhelpers.services import call_service
 from rclpy.node import Node
 
 

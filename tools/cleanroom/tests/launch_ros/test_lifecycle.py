@@ -9,7 +9,7 @@ from launch.events import Shutdown, matches_action
 from launch_ros.actions import LifecycleNode, LifecycleTransition
 from launch_ros.event_handlers import OnStateTransition
 from launch_ros.events.lifecycle import ChangeState, StateTransition, matches_node_name
-from rclhelpers import call_service
+from rclhelpers.services import call_service
 from ros2_cleanroom.cli_node import cli_node
 
 PKG = 'lr_test_pkg'

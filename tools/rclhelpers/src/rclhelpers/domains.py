@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import itertools
+import random
 import time
 from collections.abc import Callable
 from typing import TypeVar
@@ -49,7 +50,12 @@ Lease = TypeVar('Lease', bound=DomainLease)
 def _try_lease(ids: range, make: Callable[[int, contextlib.ExitStack], Lease]) -> Lease | None:
     """One pass of domain_coordinator over ``ids``; None when every one is held."""
     hold = contextlib.ExitStack()
-    candidates = itertools.cycle(ids)
+    # From a random place in the range, not from its start: an ID another run
+    # has just given back may still carry that run's nodes (a killed node stays
+    # discovered until its DDS lease ends), and the lowest free ID would be
+    # exactly that one.
+    start = random.randrange(len(ids))
+    candidates = itertools.cycle([*ids[start:], *ids[:start]])
     try:
         # Entered by the stack and left with no exception on release: an error
         # raised while the lease is held never reaches the library's generator.

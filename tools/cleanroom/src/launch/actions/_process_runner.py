@@ -5,17 +5,16 @@ Output pipes (or pseudo-terminals with emulate_tty) are read with
 falling back to a waiting thread.  This keeps the loop free of child-watcher
 threads per process and makes every start cheap.
 
-Every child gets PR_SET_PDEATHSIG=SIGKILL so that it dies with the launch
-even when the launch itself is killed or crashes.  It is set in the child
-between fork and exec (preexec_fn), followed by a check that the parent is
-still the launch: a launch killed just before the prctl would otherwise
-leave the child behind.  (`setpriv --pdeathsig` starts processes faster but
+Every child gets PR_SET_PDEATHSIG=SIGKILL (rclhelpers.processes) so that it
+dies with the launch even when the launch itself is killed or crashes.  It is
+set in the child between fork and exec (preexec_fn), followed by a check that
+the parent is still the launch: a launch killed just before the prctl would
+otherwise leave the child behind.  (`setpriv --pdeathsig` starts processes faster but
 has exactly that window, which a busy machine hits.)
 """
 from __future__ import annotations
 
 import asyncio
-import ctypes
 import os
 import pty
 import signal
@@ -23,21 +22,9 @@ import subprocess
 import threading
 from collections.abc import Callable
 
-_PR_SET_PDEATHSIG = 1
+from rclhelpers.processes import die_with_parent
+
 _EXIT_GRACE_SECONDS = 0.5  # how long to wait for pipes held open by grandchildren
-
-try:
-    _libc: ctypes.CDLL | None = ctypes.CDLL(None, use_errno=True)
-except OSError:  # pragma: no cover - not Linux/glibc
-    _libc = None
-
-
-def die_with_parent(parent_pid: int) -> None:
-    """preexec_fn: ask the kernel to SIGKILL the child when its parent thread dies."""
-    if _libc is not None:
-        _libc.prctl(_PR_SET_PDEATHSIG, signal.SIGKILL, 0, 0, 0)
-    if os.getppid() != parent_pid:  # the parent died between fork and prctl
-        os._exit(1)
 
 
 class RunningProcess:
@@ -110,7 +97,7 @@ class RunningProcess:
             self._popen = subprocess.Popen(
                 args, cwd=self._cwd, env=self._env,
                 stdin=subprocess.PIPE, stdout=children[0], stderr=children[1],
-                preexec_fn=lambda: die_with_parent(me), close_fds=True)
+                preexec_fn=lambda: die_with_parent(me, signal.SIGKILL), close_fds=True)
         except BaseException:
             for fd in parents:
                 os.close(fd)

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import argparse
 
-from rclhelpers import is_hidden, split_full_name
+from rclhelpers.names import is_hidden, split_full_name
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
     get_action_server_names_and_types_by_node,

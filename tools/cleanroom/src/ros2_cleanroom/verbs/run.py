@@ -11,25 +11,13 @@ lot (by lessons and tests) and should cost one interpreter start only.
 from __future__ import annotations
 
 import argparse
-import ctypes
 import os
 import shlex
 import signal
 import subprocess
 import sys
 
-_PR_SET_PDEATHSIG = 1
-
-
-def _die_with_parent(parent_pid: int) -> None:
-    """Runs in the child before exec: SIGTERM it if `ros2 run` dies, so nothing is orphaned."""
-    try:
-        libc = ctypes.CDLL(None, use_errno=True)
-        libc.prctl(_PR_SET_PDEATHSIG, signal.SIGTERM, 0, 0, 0)
-    except (OSError, AttributeError):
-        return
-    if os.getppid() != parent_pid:  # the parent died before prctl took effect
-        os._exit(1)
+from rclhelpers.processes import die_with_parent
 
 
 def find_executable(package: str, executable: str) -> str | None:
@@ -71,7 +59,7 @@ def run_executable(cmd: list[str]) -> int:
     parent = os.getpid()
     previous = signal.signal(signal.SIGINT, lambda _signum, _frame: None)
     try:
-        process = subprocess.Popen(cmd, preexec_fn=lambda: _die_with_parent(parent))
+        process = subprocess.Popen(cmd, preexec_fn=lambda: die_with_parent(parent, signal.SIGTERM))
         return process.wait()
     finally:
         signal.signal(signal.SIGINT, previous)
