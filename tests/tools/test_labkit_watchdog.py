@@ -14,6 +14,7 @@ import time
 
 import psutil
 import pytest
+from labkit import watchdog
 from labkit.background import WATCHDOG
 from labkit.watchdog import group_members, stop_group
 
@@ -82,22 +83,27 @@ def test_interpreter_exit_stops_what_is_still_running(owner):
     assert _wait_until_gone([watchdog_pid], timeout=10) == []
 
 
-def test_watchdog_exits_by_itself_when_the_group_is_gone(tmp_path):
+def test_watchdog_keeps_watching_a_live_group_and_exits_once_it_is_gone(monkeypatch):
+    """In-process, with the poll counted instead of timed: while the owner and the
+    group live, watch() keeps polling; the group's end makes it return 0."""
     sleeper = subprocess.Popen([sys.executable, '-c', 'import time; time.sleep(600)'],
                                start_new_session=True)
-    watchdog = subprocess.Popen([sys.executable, WATCHDOG, str(os.getpid()), str(sleeper.pid)],
-                                start_new_session=True)
+    polls = []
+
+    def poll(_seconds: float) -> None:
+        polls.append(sleeper.poll())  # None: the group was alive at this poll
+        if len(polls) == 3:
+            sleeper.kill()
+            sleeper.wait()
+
+    monkeypatch.setattr(watchdog.time, 'sleep', poll)
     try:
-        time.sleep(0.5)
-        assert watchdog.poll() is None  # owner alive, group alive: keeps watching
-        sleeper.kill()
-        sleeper.wait()
-        assert watchdog.wait(timeout=10) == 0
+        assert watchdog.watch(os.getppid(), sleeper.pid) == 0
     finally:
-        for proc in (sleeper, watchdog):
-            if proc.poll() is None:
-                proc.kill()
-                proc.wait()
+        if sleeper.poll() is None:
+            sleeper.kill()
+            sleeper.wait()
+    assert polls == [None, None, None]  # three polls with the group alive, then it ended
 
 
 def test_watchdog_usage_error():
