@@ -1,19 +1,27 @@
-"""Session fixture of the clean-room tests: a private ROS domain.
+"""Fixtures of the clean-room tests: a private ROS domain, in-process launches.
 
 Collected only where the clean room is the `launch` in use (not over a real ROS 2).
 
 Domains come from the allocator described in CONTRIBUTING.md (IDs 1-89 from
 domain_coordinator, through launch_testing.domain_isolation), held for the
 whole session, so parallel runs on one machine never share a domain.
+
+`launch_test_session` marks every process started after it with a token in
+the environment and fails the session if one survives; `run_launch` runs a
+launch in this process (see _launch_run.py).  The launch/ and launch_ros/
+tests use both.
 """
 from __future__ import annotations
 
+import functools
 import importlib.util
 import os
-from collections.abc import Iterator
+import uuid
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from _launch_run import TOKEN_VAR, LaunchResult, marked_processes, run_in_process
 
 # These are tests of our implementation: where a real ROS 2 is sourced, `launch`
 # and `ros2` are Jazzy's and the clean room is not installed (tools/setup_env.sh),
@@ -46,3 +54,41 @@ def ros_domain() -> Iterator[int]:
             else:
                 os.environ[key] = value
         lease.release()
+
+
+@pytest.fixture(scope='session')
+def launch_test_session(ros_domain: int,
+                        tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
+    """Private domain, private log folder, and the no-process-left-behind check.
+
+    Sets the token and ROS_LOG_DIR in this process's environment until the
+    session ends, so every process started later inherits them.  Yields the token.
+    """
+    token = uuid.uuid4().hex
+    saved = {key: os.environ.get(key) for key in (TOKEN_VAR, 'ROS_LOG_DIR')}
+    os.environ[TOKEN_VAR] = token
+    os.environ['ROS_LOG_DIR'] = str(tmp_path_factory.mktemp('ros_log'))
+    try:
+        yield token
+    finally:
+        leftovers = marked_processes(token)
+        for proc in leftovers:
+            proc.kill()
+        for key, value in saved.items():
+            if value is None:
+                os.environ.pop(key, None)
+            else:
+                os.environ[key] = value
+        assert not leftovers, f'processes left behind by the tests: {leftovers}'
+
+
+@pytest.fixture
+def run_launch(launch_test_session: str,
+               capfd: pytest.CaptureFixture) -> Callable[..., LaunchResult]:
+    """`run_launch(entities, argv=(), shutdown_after=None, debug=False)` -> LaunchResult.
+
+    Screen output is taken with capfd (so C code in this process, such as
+    rclpy's logging, counts too) and written back, so a test may also read capfd
+    and a failing test's report shows it.
+    """
+    return functools.partial(run_in_process, capfd)

@@ -1,8 +1,9 @@
 """Fixtures of the `launch` core tests.
 
-Every test runs in a private ROS domain (see ../conftest.py), with log files
-in a temporary ROS_LOG_DIR.  A token in the environment marks every process
-the tests start (children inherit it); the session fails if one survives.
+Every test runs in a private ROS domain, with log files in a temporary
+ROS_LOG_DIR; a token in the environment marks every process the tests start
+(children inherit it) and the session fails if one survives.  That session
+and `run_launch` are ../conftest.py's (shared with launch_ros/).
 """
 from __future__ import annotations
 
@@ -10,113 +11,17 @@ import os
 import stat
 import subprocess
 import sys
-import uuid
-from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
-import psutil
 import pytest
 
-TOKEN_VAR = 'CLEANROOM_LAUNCH_TEST_TOKEN'
 ROS2 = str(Path(sys.executable).parent / 'ros2')
 
 
-def _marked_processes(token: str) -> list[psutil.Process]:
-    found = []
-    for proc in psutil.process_iter():
-        if proc.pid == os.getpid():
-            continue
-        try:
-            if proc.environ().get(TOKEN_VAR) == token and \
-                    proc.status() != psutil.STATUS_ZOMBIE:  # zombies are dead already
-                found.append(proc)
-        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
-            continue
-    return found
-
-
 @pytest.fixture(scope='session', autouse=True)
-def launch_test_session(ros_domain: int,
-                        tmp_path_factory: pytest.TempPathFactory) -> Iterator[str]:
-    """Private domain, private log folder, and the no-process-left-behind check."""
-    token = uuid.uuid4().hex
-    saved = {key: os.environ.get(key) for key in (TOKEN_VAR, 'ROS_LOG_DIR')}
-    os.environ[TOKEN_VAR] = token
-    os.environ['ROS_LOG_DIR'] = str(tmp_path_factory.mktemp('ros_log'))
-    try:
-        yield token
-    finally:
-        leftovers = _marked_processes(token)
-        for proc in leftovers:
-            proc.kill()
-        for key, value in saved.items():
-            if value is None:
-                os.environ.pop(key, None)
-            else:
-                os.environ[key] = value
-        assert not leftovers, f'processes left behind by the tests: {leftovers}'
-
-
-class LaunchResult:
-    """Exit code, started processes and screen output of one in-process launch."""
-
-    def __init__(self, returncode: int, started: list[dict[str, Any]], output: str) -> None:
-        self.returncode = returncode
-        self.started = started
-        self.output = output
-
-    @property
-    def names(self) -> list[str]:
-        """Process names, sorted by their number N (processes start concurrently)."""
-        return sorted((p['name'] for p in self.started),
-                      key=lambda name: int(name.rsplit('-', 1)[1]))
-
-    def process(self, name: str) -> dict[str, Any]:
-        """The (first) started process called `name`."""
-        return next(p for p in self.started if p['name'] == name)
-
-    def user_lines(self) -> list[str]:
-        """The messages LogInfo printed."""
-        prefix = '[INFO] [launch.user]: '
-        return [line[len(prefix):] for line in self.output.splitlines()
-                if line.startswith(prefix)]
-
-
-@pytest.fixture
-def run_launch(capsys: pytest.CaptureFixture) -> Any:
-    """Run entities in a LaunchService in this process and return a LaunchResult.
-
-    The launch ends when idle, or `shutdown_after` seconds after it started.
-    Processes it started must be gone when run() returns.
-    """
-    from launch import LaunchDescription, LaunchService
-    from launch.actions import RegisterEventHandler, Shutdown, TimerAction
-    from launch.event_handlers import OnProcessStart
-
-    def run(entities: list, *, argv: tuple = (), shutdown_after: float | None = None,
-            debug: bool = False) -> LaunchResult:
-        started: list[dict[str, Any]] = []
-
-        def on_start(event: Any, context: Any) -> None:
-            started.append({'name': event.process_name, 'pid': event.pid,
-                            'cmd': list(event.cmd), 'env': dict(event.env or {}),
-                            'cwd': event.cwd})
-
-        extra = [] if shutdown_after is None else [
-            TimerAction(period=shutdown_after, actions=[Shutdown(reason='test done')])]
-        capsys.readouterr()
-        service = LaunchService(argv=list(argv), debug=debug)
-        service.include_launch_description(LaunchDescription(
-            [RegisterEventHandler(OnProcessStart(on_start=on_start)), *entities, *extra]))
-        returncode = service.run()
-        output = capsys.readouterr().out
-        for proc in started:
-            assert not psutil.pid_exists(proc['pid']) or \
-                psutil.Process(proc['pid']).status() == psutil.STATUS_ZOMBIE, proc
-        return LaunchResult(returncode, started, output)
-
-    return run
+def _in_launch_test_session(launch_test_session: str) -> None:
+    """Every test here runs in the marked session of ../conftest.py (one check for all)."""
 
 
 def _write(path: Path, text: str, executable: bool = False) -> Path:

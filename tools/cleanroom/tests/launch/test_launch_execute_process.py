@@ -32,7 +32,7 @@ def test_command_line_is_expanded_per_argument(run_launch, tmp_path):
                             EnvironmentVariable('CR_NOPE', default_value='dflt')],
                        cwd=str(tmp_path), name='echoer', output='screen'),
     ])
-    (proc,) = result.started
+    (proc,) = result.processes
     assert proc['cmd'] == ['echo', 'two words', 'ab', 'dflt']
     assert proc['cwd'] == str(tmp_path)
     assert '[echoer-1] two words ab dflt' in result.output.splitlines()
@@ -109,7 +109,7 @@ def test_process_description_is_the_expanded_command(run_launch, tmp_path):
     assert description.final_name is None and description.final_cmd is None
     result = run_launch([proc], argv=('word:=hi',))
     assert description.final_name == 'dyn_hi-1' == proc.name
-    assert description.final_cmd == ['echo', 'hi'] == result.started[0]['cmd']
+    assert description.final_cmd == ['echo', 'hi'] == result.processes[0]['cmd']
     assert description.final_cwd == str(tmp_path)
     assert description.final_env['CR_EXTRA'] == 'yes'
     assert '[dyn_hi-1] hi' in result.output.splitlines()

@@ -92,7 +92,7 @@ def test_processes_get_scoped_environment_plus_additional_env(run_launch):
                        env={'CR_ONLY': '1', 'PATH': '/usr/bin:/bin'}),
     ])
     envs = {p['name']: {k: v for k, v in p['env'].items() if k.startswith('CR_')}
-            for p in result.started}
+            for p in result.processes}
     assert envs == {'inside-1': {'CR_A': 'a', 'CR_B': 'b', 'CR_C': 'c'},
                     'outside-2': {'CR_A': 'a'}, 'replaced-3': {'CR_ONLY': '1'}}
 
