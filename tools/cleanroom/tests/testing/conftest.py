@@ -11,22 +11,11 @@ import uuid
 from collections.abc import Iterator
 from pathlib import Path
 
-import psutil
 import pytest
+from _launch_run import marked_processes
 
 CASES = Path(__file__).parent / 'cases'
 TOKEN_VAR = 'CLEANROOM_TESTING_TEST_TOKEN'
-
-
-def _marked_processes(token: str) -> list[psutil.Process]:
-    found = []
-    for proc in psutil.process_iter():
-        try:
-            if proc.environ().get(TOKEN_VAR) == token and proc.status() != psutil.STATUS_ZOMBIE:
-                found.append(proc)
-        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
-            continue
-    return found
 
 
 @pytest.fixture
@@ -37,7 +26,7 @@ def run_env(ros_domain: int, tmp_path: Path) -> Iterator[dict[str, str]]:
                RCUTILS_COLORIZED_OUTPUT='0', PYTHONWARNINGS='ignore')
     env[TOKEN_VAR] = token
     yield env
-    leftovers = _marked_processes(token)
+    leftovers = marked_processes(token, TOKEN_VAR)
     for proc in leftovers:
         proc.kill()
     assert not leftovers, f'processes left behind: {leftovers}'
