@@ -5,7 +5,6 @@ session leftover check (launch/, launch_ros/) and testing/'s per-test check.
 """
 from __future__ import annotations
 
-import os
 import sys
 from typing import Any
 
@@ -16,25 +15,9 @@ from launch import LaunchDescription, LaunchService
 from launch.actions import RegisterEventHandler, Shutdown, TimerAction
 from launch.event_handlers import OnProcessStart
 
+
 # Every process the tests start carries this variable (children inherit it), so
 # the session can find the ones that survived, whoever started them.
-TOKEN_VAR = 'CLEANROOM_LAUNCH_TEST_TOKEN'
-
-
-def marked_processes(token: str, var: str = TOKEN_VAR) -> list[psutil.Process]:
-    """Live processes (zombies are dead already) but this one whose `var` is `token`."""
-    found = []
-    for proc in psutil.process_iter():
-        if proc.pid == os.getpid():
-            continue
-        try:
-            if proc.environ().get(var) == token and proc.status() != psutil.STATUS_ZOMBIE:
-                found.append(proc)
-        except (psutil.AccessDenied, psutil.NoSuchProcess, psutil.ZombieProcess):
-            continue
-    return found
-
-
 def read_param_files(cmd: list[str]) -> list:
     """Replace each `--params-file PATH` by {'path': PATH, 'content': parsed YAML}.
 

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
-from _launch_run import marked_processes
+from _leftovers import marked_processes
 
 CASES = Path(__file__).parent / 'cases'
 TOKEN_VAR = 'CLEANROOM_TESTING_TEST_TOKEN'
