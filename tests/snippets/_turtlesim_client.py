@@ -9,7 +9,6 @@ from __future__ import annotations
 import ctypes
 import os
 import sys
-import time
 from pathlib import Path
 
 import rclpy
@@ -17,6 +16,8 @@ from geometry_msgs.msg import Twist
 from labkit import observer
 from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
+
+from .._polling import wait_for
 
 LIMIT = 30.0  # seconds; a hang guard, not a speed requirement
 
@@ -68,13 +69,8 @@ class SimClient:
 
     def spin_until(self, condition, what: str, limit: float = LIMIT):
         """Spin until ``condition()`` is truthy; return it (fail naming ``what``)."""
-        deadline = time.monotonic() + limit
-        while time.monotonic() < deadline:
-            value = condition()
-            if value:
-                return value
-            self.executor.spin_once(timeout_sec=0.05)
-        raise AssertionError(f'timed out waiting for {what}')
+        return wait_for(condition, limit, what,
+                        pause=lambda: self.executor.spin_once(timeout_sec=0.05))
 
     def call(self, srv_type, service: str, /, **fields):
         """Call ``service`` with a request of ``fields`` and return its response.

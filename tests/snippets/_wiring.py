@@ -1,9 +1,9 @@
 """Topic wiring of a running system, as the snippet tests compare it."""
 from __future__ import annotations
 
-import time
-
 import labkit
+
+from .._polling import poll
 
 #: topic -> (publishers, subscribers)
 Wiring = dict[str, tuple[tuple[str, ...], tuple[str, ...]]]
@@ -20,13 +20,14 @@ def settled_graph(expected: Wiring, guard: float, only_expected: bool = False,
     or as it is when `guard` seconds run out, for the assertion to show.  With
     `only_expected`, topics `expected` does not name are left out of the comparison;
     with `namespace`, endpoints of nodes outside it (see :func:`in_namespace`)."""
-    deadline = time.monotonic() + guard
-    while True:
-        snapshot = labkit.graph()
-        if wiring_of(snapshot, expected, only_expected, namespace) == expected \
-                or time.monotonic() > deadline:
-            return snapshot
-        time.sleep(0.2)
+    snapshots = []
+
+    def shows_expected() -> bool:
+        snapshots.append(labkit.graph())
+        return wiring_of(snapshots[-1], expected, only_expected, namespace) == expected
+
+    poll(shows_expected, guard)
+    return snapshots[-1]
 
 
 def wiring_of(snapshot: labkit.GraphSnapshot, expected: Wiring,

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import re
 import subprocess
-import time
 from pathlib import Path
 
 import labkit
@@ -23,6 +22,7 @@ from labkit import checks
 from labkit.background import Background
 from textbook import paths
 
+from .._polling import poll
 from ._shown_snippets import launch_files_included_by
 
 LESSON = paths.LESSONS / 'ch06/L1/06_events_and_processes.md'
@@ -36,10 +36,7 @@ def _start(launch_file: str, ros_env: dict[str, str]) -> Background:
 
 def _wait_for_exit(run: Background) -> int:
     """Wait until the launch ends by itself (fails, after the hang guard, if it does not)."""
-    deadline = time.monotonic() + HANG_GUARD
-    while run.running and time.monotonic() < deadline:
-        time.sleep(0.1)
-    ended_by_itself = not run.running
+    ended_by_itself = poll(lambda: not run.running, HANG_GUARD)
     code = run.stop()
     assert ended_by_itself, f'the launch did not end by itself:\n{run.output()}'
     return code
@@ -66,9 +63,7 @@ def _in_order(lines: list[str], *patterns: str) -> list[int]:
 
 def _wait_for_count(run: Background, pattern: str, count: int) -> None:
     """Wait until `count` lines match `pattern` (or the launch ends, or the hang guard)."""
-    deadline = time.monotonic() + HANG_GUARD
-    while _count(run.lines, pattern) < count and run.running and time.monotonic() < deadline:
-        time.sleep(0.1)
+    poll(lambda: _count(run.lines, pattern) >= count, HANG_GUARD, stop=lambda: not run.running)
 
 
 def _count(lines: list[str], pattern: str) -> int:

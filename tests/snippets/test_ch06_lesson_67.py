@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import re
 import subprocess
-import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
@@ -21,6 +20,7 @@ import psutil
 import pytest
 from textbook import paths
 
+from .._polling import poll
 from ._shown_snippets import launch_files_included_by
 
 LESSON = paths.LESSONS / 'ch06/L1/07_debugging_multi_node_systems.md'
@@ -33,13 +33,16 @@ TOPICS = ('/range/front', '/range/rear', '/range/left', '/range/right')
 def _ros2(env: dict[str, str], *words: str, shows: Callable[[str], bool] = lambda _: True,
           ) -> str:
     """stdout+stderr of `ros2 WORDS`, run until `shows(output)` or the hang guard runs out."""
-    deadline = time.monotonic() + HANG_GUARD
-    while True:
+    outputs = []
+
+    def run() -> bool:
         result = subprocess.run(['ros2', *words], env=env, cwd=paths.WORKSPACE,
                                 capture_output=True, text=True, timeout=HANG_GUARD)
-        output = result.stdout + result.stderr
-        if shows(output) or time.monotonic() > deadline:
-            return output
+        outputs.append(result.stdout + result.stderr)
+        return shows(outputs[-1])
+
+    poll(run, HANG_GUARD)
+    return outputs[-1]
 
 
 @pytest.fixture(scope='module')
@@ -70,10 +73,8 @@ def _pid_of(run: labkit.Background, node: str) -> str:
 
 def _written(path: Path, text: str) -> str:
     """The file once it holds `text` (a node writes its log file in batches)."""
-    deadline = time.monotonic() + HANG_GUARD
-    while text not in (content := path.read_text()) and time.monotonic() < deadline:
-        time.sleep(0.2)
-    return content
+    poll(lambda: text in path.read_text(), HANG_GUARD)
+    return path.read_text()
 
 
 def test_symptom_the_monitor_hears_no_sensor(broken):

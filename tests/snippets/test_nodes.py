@@ -6,13 +6,14 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from pathlib import Path
 
 import pytest
 import rclpy
 from rclpy.context import Context
 from textbook import workspace
+
+from .._polling import poll
 
 STARTUP_LIMIT = 30.0  # seconds; a hang guard, not a speed requirement
 EXECUTABLES = [(package, exe) for package, exes in
@@ -42,11 +43,8 @@ class NodeProcess:
 
     def wait_until(self, condition) -> bool:
         """Wait (up to the hang guard) until ``condition(lines)`` holds."""
-        deadline = time.monotonic() + STARTUP_LIMIT
-        while time.monotonic() < deadline and self.proc.poll() is None:
-            if condition(self.lines):
-                return True
-            time.sleep(0.1)
+        poll(lambda: condition(self.lines), STARTUP_LIMIT,
+             stop=lambda: self.proc.poll() is not None)
         return condition(self.lines)
 
     def stop(self) -> int:
@@ -78,12 +76,8 @@ def graph():
 
 
 def _wait_for_node(graph, name: str, proc: subprocess.Popen) -> bool:
-    deadline = time.monotonic() + STARTUP_LIMIT
-    while time.monotonic() < deadline and proc.poll() is None:
-        if name in graph.get_node_names():
-            return True
-        time.sleep(0.2)
-    return False
+    return poll(lambda: name in graph.get_node_names(), STARTUP_LIMIT,
+                stop=lambda: proc.poll() is not None)
 
 
 def test_there_are_executables():

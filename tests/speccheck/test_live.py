@@ -2,8 +2,6 @@
 meets and specs that it does not (nodes, types, endpoints, rates, parameters, QoS)."""
 from __future__ import annotations
 
-import time
-
 import labkit
 import pytest
 import rclpy
@@ -12,6 +10,8 @@ from rclpy.qos import QoSProfile, ReliabilityPolicy
 from rclpy.signals import SignalHandlerOptions
 from speccheck import Status, check_live, load_spec
 from std_msgs.msg import Float32
+
+from .._polling import wait_for
 
 MET, FAILED = Status.MET, Status.FAILED
 WINDOW = 2.0
@@ -95,13 +95,11 @@ topics:
 
 def wait_until_seen(topic, publishers, subscribers, timeout=10.0):
     """Wait until labkit's observer has discovered these endpoints (new in this process)."""
-    deadline = time.monotonic() + timeout
-    while True:
+    def seen() -> bool:
         found = labkit.graph().topics.get(topic)
-        if found and found.publishers == publishers and found.subscribers == subscribers:
-            return
-        assert time.monotonic() < deadline, f'{topic} endpoints not discovered: {found}'
-        time.sleep(0.1)
+        return bool(found) and (found.publishers, found.subscribers) == (publishers, subscribers)
+
+    wait_for(seen, timeout, f'the endpoints of {topic} to be discovered')
 
 
 @pytest.fixture
