@@ -6,24 +6,13 @@ workspace sourced and a private ROS domain, which this process shares.
 from __future__ import annotations
 
 import labkit
-import psutil
 import pytest
 from labkit.commands import format_argument
-from labkit.watchdog import group_members
+from rclhelpers.processes import group_members
+
+from .._polling import still_running
 
 SYSTEM_NODES = ['/sensor_publisher', '/data_processor']
-
-
-def _gone(pids: list[int]) -> list[int]:
-    """The pids among `pids` that still run (zombies count as gone)."""
-    alive = []
-    for pid in pids:
-        try:
-            if psutil.Process(pid).status() != psutil.STATUS_ZOMBIE:
-                alive.append(pid)
-        except psutil.NoSuchProcess:
-            continue
-    return alive
 
 
 def test_launch_shows_the_command_and_finds_its_nodes(ros_env):
@@ -86,7 +75,7 @@ def test_stop_reaps_the_whole_process_group_and_is_idempotent(ros_env):
     watchdog = run._watchdog.pid
     code = run.stop()
     assert code == 0
-    assert _gone(members + [watchdog]) == []
+    assert still_running(members + [watchdog]) == []
     assert run.stop() == code
     assert repr(run).endswith(', exited with code 0>')
 
@@ -103,7 +92,7 @@ def test_stop_escalates_when_sigint_is_ignored(ros_env, tmp_path):
     members = [proc.pid for proc in group_members(background.pid)]
     assert len(members) == 2
     assert background.stop(sigint_grace=0.5, sigterm_grace=2) == -15  # SIGTERM ended it
-    assert _gone(members) == []
+    assert still_running(members) == []
 
 
 def test_run_builds_ros_args(ros_env):
@@ -131,4 +120,4 @@ def test_stop_also_ends_children_that_outlive_the_command(ros_env, tmp_path):
     members = [proc.pid for proc in group_members(background.pid)]
     assert len(members) == 2
     assert background.stop(sigint_grace=5, sigterm_grace=5) == -2  # Ctrl-C ended the command
-    assert _gone(members) == []
+    assert still_running(members) == []

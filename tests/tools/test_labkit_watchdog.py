@@ -10,13 +10,14 @@ import signal
 import subprocess
 import sys
 import textwrap
-import time
 
-import psutil
 import pytest
 from labkit import watchdog
 from labkit.background import WATCHDOG
-from labkit.watchdog import group_members, stop_group
+from labkit.watchdog import stop_group
+from rclhelpers.processes import group_members
+
+from .._polling import poll, still_running
 
 OWNER = textwrap.dedent("""
     import sys, time
@@ -32,18 +33,8 @@ OWNER = textwrap.dedent("""
 
 def _wait_until_gone(pids: list[int], timeout: float) -> list[int]:
     """Poll until none of `pids` runs (zombies count as gone); return the survivors."""
-    deadline = time.monotonic() + timeout
-    while True:
-        alive = []
-        for pid in pids:
-            try:
-                if psutil.Process(pid).status() != psutil.STATUS_ZOMBIE:
-                    alive.append(pid)
-            except psutil.NoSuchProcess:
-                pass
-        if not alive or time.monotonic() > deadline:
-            return alive
-        time.sleep(0.2)
+    poll(lambda: not still_running(pids), timeout)
+    return still_running(pids)
 
 
 @pytest.fixture

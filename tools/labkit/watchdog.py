@@ -2,7 +2,7 @@
 
     python .../labkit/watchdog.py OWNER_PID PGID
 
-labkit starts one per background process (by path: it needs only psutil),
+labkit starts one per background process (by path: it needs only psutil and rclhelpers),
 in a session of its own so that whatever kills the kernel (a crash, a
 restart, a cell timeout that kills the kernel's process group) does not
 kill the watchdog too.  It is a child of the kernel, so when the kernel is
@@ -17,40 +17,17 @@ import signal
 import sys
 import time
 
-import psutil
+from rclhelpers import processes
+from rclhelpers.processes import group_members
 
 POLL = 0.2
 #: (signal, seconds to wait for the group to go away after sending it)
 ESCALATION = ((signal.SIGINT, 3.0), (signal.SIGTERM, 2.0), (signal.SIGKILL, 2.0))
 
 
-def group_members(pgid: int) -> list[psutil.Process]:
-    """Live (non-zombie) processes of a process group."""
-    members = []
-    for proc in psutil.process_iter(['status']):
-        try:
-            if os.getpgid(proc.pid) == pgid and proc.info['status'] != psutil.STATUS_ZOMBIE:
-                members.append(proc)
-        except (ProcessLookupError, psutil.Error):
-            continue
-    return members
-
-
 def stop_group(pgid: int, escalation: tuple = ESCALATION) -> bool:
-    """Signal the group, escalating until it is empty; True when it is."""
-    for sig, wait in escalation:
-        if not group_members(pgid):
-            return True
-        try:
-            os.killpg(pgid, sig)
-        except ProcessLookupError:
-            return True
-        deadline = time.monotonic() + wait
-        while time.monotonic() < deadline:
-            if not group_members(pgid):
-                return True
-            time.sleep(0.05)
-    return not group_members(pgid)
+    """rclhelpers.processes.stop_group with the watchdog's escalation by default."""
+    return processes.stop_group(pgid, escalation)
 
 
 def watch(owner_pid: int, pgid: int) -> int:

@@ -9,5 +9,6 @@ run`, the test plugin) does not pay for rclpy:
 - `names`: full node names and hidden names (no imports);
 - `services`: one service call on a node nothing spins (rclpy);
 - `domains`: the ROS domain lease (domain_coordinator);
-- `processes`: a child that dies with its parent (Linux prctl).
+- `processes`: a child that dies with its parent (Linux prctl), a process group
+  stopped with escalating signals (psutil).
 """

@@ -17,6 +17,7 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from rclhelpers.processes import stop_group
 
 RUN_TIMEOUT = 900.0
 STOP_GRACE = 10.0
@@ -97,25 +98,9 @@ def _run_in_own_group(command: list[str], cwd: str) -> tuple:
 
 
 def _stop_group(process: subprocess.Popen) -> None:
-    for signum in (signal.SIGINT, signal.SIGKILL):
-        try:
-            os.killpg(process.pid, signum)
-        except ProcessLookupError:
-            return
-        try:
-            process.wait(STOP_GRACE)
-        except subprocess.TimeoutExpired:
-            continue
-        if not _group_alive(process.pid):
-            return
-
-
-def _group_alive(pgid: int) -> bool:
-    try:
-        os.killpg(pgid, 0)
-    except ProcessLookupError:
-        return False
-    return True
+    """SIGINT the run's process group, SIGKILL what is left, and reap the run."""
+    stop_group(process.pid, ((signal.SIGINT, STOP_GRACE), (signal.SIGKILL, STOP_GRACE)))
+    process.wait()
 
 
 def _failed_tests(report: str) -> list[str] | None:
