@@ -12,7 +12,6 @@ from __future__ import annotations
 import os
 import signal
 import subprocess
-import time
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -27,6 +26,7 @@ from rclpy.node import Node as RclpyNode
 from rclpy.parameter import parameter_value_to_python
 from textbook import paths
 
+from .._polling import poll
 from ._shown_snippets import launch_files_included_by
 
 LESSONS = [paths.LESSONS / 'ch06/L1/01_anatomy_of_a_launch_file.md',
@@ -148,20 +148,17 @@ def launched(case: Case, ros_env: dict[str, str]):
 
 def _wait_for_nodes(graph: RclpyNode, names: set[str], proc: subprocess.Popen) -> set[str]:
     """Full names of the nodes in ``names`` that appeared before the launch ended."""
-    deadline = time.monotonic() + HANG_GUARD
-    seen: set[str] = set()
-    while time.monotonic() < deadline and proc.poll() is None:
-        seen = {f"{ns.rstrip('/')}/{name}" for name, ns in graph.get_node_names_and_namespaces()}
-        if names <= seen:
-            break
-        time.sleep(0.2)
-    return names & seen
+    def seen() -> set[str]:
+        return {f"{ns.rstrip('/')}/{name}" for name, ns in graph.get_node_names_and_namespaces()}
+
+    poll(lambda: names <= seen(), HANG_GUARD, stop=lambda: proc.poll() is not None)
+    return names & seen()
 
 
 def _get_parameters(node: str, names: list[str]) -> dict[str, Any]:
     """What ``ros2 param get NODE NAME`` asks: the node's get_parameters service
     (called through labkit's observer, the tests' one service-call helper)."""
-    response = observer.observer().call(GetParameters, f'{node}/get_parameters',
+    response = observer.observer().read(GetParameters, f'{node}/get_parameters',
                                         GetParameters.Request(names=names), HANG_GUARD)
     assert response is not None, f'{node}: get_parameters did not answer'
     values = [parameter_value_to_python(v) for v in response.values]

@@ -11,7 +11,6 @@ import signal
 import subprocess
 import sys
 import threading
-import time
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -19,6 +18,7 @@ import psutil
 import pytest
 import rclpy
 from rcl_interfaces.srv import GetParameters, ListParameters
+from rclhelpers import services
 from rclhelpers.names import full_name, is_hidden, split_full_name
 from rclhelpers.services import call_service
 from rclpy.context import Context
@@ -26,6 +26,8 @@ from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
 from textbook import paths
+
+from .._polling import poll, still_running
 
 RCLHELPERS = paths.TOOLS / 'rclhelpers'
 
@@ -152,10 +154,12 @@ def test_a_second_copy_is_found(tmp_path):
     (tmp_path / 'labkit' / 'observer.py').write_text(
         'import rclpy\n\n\ndef is_hidden(name):\n    return False\n\n'
         'rclpy.spin_until_future_complete(node, future)\n'
-        'with domain_coordinator.domain_id(selector=pick):\n    pass\n')
+        'with domain_coordinator.domain_id(selector=pick):\n    pass\n'
+        '_PR_SET_PDEATHSIG = 1\n')
     assert second_copies(tmp_path) == ['labkit/observer.py:4: def is_hidden(',
                                        'labkit/observer.py:7: spin_until_future_complete',
-                                       'labkit/observer.py:8: domain_coordinator.domain_id(']
+                                       'labkit/observer.py:8: domain_coordinator.domain_id(',
+                                       'labkit/observer.py:10: PR_SET_PDEATHSIG = ']
 
 
 # A parent that starts a child with die_with_parent, says the child's pid and waits.
@@ -176,12 +180,27 @@ def test_die_with_parent_ends_the_child_when_its_parent_is_killed():
     try:
         parent.kill()  # SIGKILL: the parent can clean up nothing itself
         parent.wait()
-        deadline = time.monotonic() + 30  # a hang guard, not a speed limit
-        while child.is_running() and child.status() != psutil.STATUS_ZOMBIE \
-                and time.monotonic() < deadline:
-            time.sleep(0.05)
-        gone = not child.is_running() or child.status() == psutil.STATUS_ZOMBIE
+        gone = poll(lambda: not still_running([child.pid]), 30)  # 30: a hang guard
     finally:
         if child.is_running():
             child.send_signal(signal.SIGKILL)
     assert gone, 'the child outlived its killed parent'
+
+
+def test_read_service_asks_again_until_answered(monkeypatch):
+    """A first request that reached only a stale server (None) is sent again."""
+    answers = [None, None, 'response']
+    timeouts = []
+
+    def call(node, srv_type, name, request, timeout):
+        timeouts.append(timeout)
+        return answers.pop(0)
+
+    monkeypatch.setattr(services, 'call_service', call)
+    assert services.read_service(None, None, '/x', None, timeout=30) == 'response'
+    assert timeouts == [services.RESEND_AFTER] * 3
+
+
+def test_read_service_gives_up_after_its_timeout(monkeypatch):
+    monkeypatch.setattr(services, 'call_service', lambda *args: None)
+    assert services.read_service(None, None, '/x', None, timeout=0) is None

@@ -125,13 +125,13 @@ def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
     """
     target = node if node.startswith('/') else '/' + node
     obs = observer.observer()
-    listing = obs.call(ListParameters, f'{target}/list_parameters',
+    listing = obs.read(ListParameters, f'{target}/list_parameters',
                        ListParameters.Request(depth=0), timeout)
     if listing is None:
         raise LabkitError(f'{target} did not answer on {target}/list_parameters: '
                           'is the node running (see labkit.graph().nodes)?')
     names = sorted(listing.result.names)
-    values = obs.call(GetParameters, f'{target}/get_parameters',
+    values = obs.read(GetParameters, f'{target}/get_parameters',
                       GetParameters.Request(names=names), timeout)
     if values is None:
         raise LabkitError(f'{target} did not answer on {target}/get_parameters')

@@ -19,7 +19,7 @@ from typing import Any
 
 import rclpy
 from rclhelpers.names import full_name, is_hidden
-from rclhelpers.services import call_service
+from rclhelpers.services import call_service, read_service
 from rclpy.context import Context
 from rclpy.node import Node
 from rclpy.signals import SignalHandlerOptions
@@ -56,6 +56,10 @@ class Observer:
     def call(self, srv_type: Any, service: str, request: Any, timeout: float = 5.0) -> Any:
         """Call a service once from the observer's node; None if nobody answered."""
         return call_service(self.node, srv_type, service, request, timeout)
+
+    def read(self, srv_type: Any, service: str, request: Any, timeout: float = 5.0) -> Any:
+        """A read (asked again until answered, see rclhelpers.services.read_service)."""
+        return read_service(self.node, srv_type, service, request, timeout)
 
 
 def observer() -> Observer:

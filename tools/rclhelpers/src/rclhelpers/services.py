@@ -1,6 +1,7 @@
-"""One service call on a node that nothing spins."""
+"""Service calls from a node that nothing spins."""
 from __future__ import annotations
 
+import time
 from typing import Any
 
 import rclpy
@@ -29,3 +30,25 @@ def call_service(node: Node, srv_type: Any, name: str, request: Any,
         return future.result() if future.done() else None
     finally:
         node.destroy_client(client)
+
+
+#: Seconds a read waits for an answer before it asks again.
+RESEND_AFTER = 1.0
+
+
+def read_service(node: Node, srv_type: Any, name: str, request: Any,
+                 timeout: float = 5.0) -> Any | None:
+    """:func:`call_service` for a request that may be repeated (a read), asked again
+    every RESEND_AFTER seconds until answered or ``timeout`` has passed.
+
+    A node that was killed stays discovered until its DDS lease ends.  When a new
+    node of the same name starts, a client may first match only the old server:
+    the request goes there and is never answered.  Asking again reaches the new
+    server once it is discovered.
+    """
+    deadline = time.monotonic() + timeout
+    while (remaining := deadline - time.monotonic()) > 0:
+        response = call_service(node, srv_type, name, request, min(remaining, RESEND_AFTER))
+        if response is not None:
+            return response
+    return None
