@@ -25,7 +25,7 @@ from textbook import paths
 from textbook.myst import fences
 
 from ._launch_log import ENDED, STARTED
-from ._wiring import Wiring, nodes_in, settled_graph, wiring_of
+from ._wiring import Wiring, in_namespace, nodes_in, settled_graph, wiring
 
 LESSON = paths.LESSONS / 'ch06/L3/13_configuration_management.md'
 PACKAGE = 'rover_config'
@@ -115,7 +115,7 @@ def _assert_system(case: Case, output: str, got: dict, snapshot: Any, exit_code:
     # Only this launch's namespace: see _wiring.in_namespace.
     namespace = f'/{case.robot}'
     assert nodes_in(snapshot, namespace) == sorted(f'{namespace}/{node}' for node in NODES), output
-    assert wiring_of(snapshot, {}, namespace=namespace) == _wiring_of(case), str(snapshot)
+    assert in_namespace(wiring(snapshot), namespace) == _wiring_of(case), str(snapshot)
     assert _typed(got) == _typed(case.expected)
     ended = [m.group(1) for line in output.splitlines() if (m := ENDED.match(line))]
     assert exit_code == 0 and sorted(ended) == sorted(started), output

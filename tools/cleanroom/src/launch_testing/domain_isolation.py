@@ -10,9 +10,9 @@ import contextlib
 import os
 from collections.abc import Iterator
 
-from rclhelpers.domains import DOMAIN_IDS, DomainLease, lease_domain
+from rclhelpers.domains import lease_domain
 
-__all__ = ['DOMAIN_IDS', 'DomainLease', 'isolated_domain', 'lease_domain']
+__all__ = ['isolated_domain', 'lease_domain']
 
 
 @contextlib.contextmanager
