@@ -8,6 +8,10 @@ then against two systems that do not: the capstone with two robots, and
 one where turtle3 runs with turtle4's configuration (both must fail).
 The capstone builds its robots in an OpaqueFunction, which the static check
 cannot see into, so every stage is a running check.
+
+A run whose wait for turtle3's nodes ran out in a system that does run them
+(a busy machine) is repeated with a longer wait, and a system that never
+starts is reported as such, never as a defect the spec caught (spec_run).
 """
 from __future__ import annotations
 
@@ -28,6 +32,9 @@ SHOWN_FINDINGS = 6
 #: a ROS name in a finding; the capstone's all start with a turtle or turtlesim
 ROS_NAME = re.compile(r'(?<![\w.])/[A-Za-z_][\w/]*')
 IN_THE_SYSTEM = re.compile(r'^/(turtle\d+|turtlesim)(/|$)')
+#: the nodes of each robot, in its turtle's namespace (capstone_bringup's robot.launch.py)
+ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
+               'safety_monitor', 'mission_recorder')
 
 
 @dataclass(frozen=True)
@@ -36,16 +43,22 @@ class System:
 
     launch: tuple[str, ...]  # speccheck's arguments after the spec
     shown: str
+    robots: int  # it runs turtle1 ... turtle<robots>
     defect: str = ''  # '' for the system that meets R9
     need: str = ''  # what the spec must say to catch the defect
 
+    def runs(self, node: str) -> bool:
+        """Whether `node` (a fully qualified name) is one of this system's robot nodes."""
+        return any(node == f'/turtle{number}/{name}'
+                   for number in range(1, self.robots + 1) for name in ROBOT_NODES)
+
 
 MEETS_R9 = System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=3'),
-                  f'{SYSTEM} robot_count:=3')
+                  f'{SYSTEM} robot_count:=3', robots=3)
 DEFECTS = (
-    System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=2'), f'{SYSTEM} robot_count:=2',
+    System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=2'), f'{SYSTEM} robot_count:=2', 2,
            'there is no third robot', "name turtle3's nodes (/turtle3/...) in your spec"),
-    System((str(DEFECT),), DEFECT.name,
+    System((str(DEFECT),), DEFECT.name, 3,
            "turtle3 runs with turtle4's configuration (its route along the bottom edge, "
            'stop_distance 1.0)',
            "give turtle3's waypoints and stop_distance the values R9 fixes, not only types"),
@@ -55,8 +68,10 @@ DEFECTS = (
 def run_speccheck(package: StudentPackage, system: System) -> SpecRun:
     """The student's spec against `system`, running, in their workspace's environment."""
     spec = package.source / SPEC
-    shown = f'python -m speccheck live {package.shown(spec)} {" ".join(system.launch)}'
-    return spec_run.run_speccheck(package, 'live', spec, list(system.launch), shown)
+    return spec_run.run_live(
+        package, spec, list(system.launch),
+        lambda target: f'python -m speccheck live {package.shown(spec)} {" ".join(target)}',
+        system.runs)
 
 
 def _why(failed: list[str]) -> str:
@@ -71,6 +86,8 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
     run = run_speccheck(package, MEETS_R9)
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
+    if run.still_starting(MEETS_R9.runs):
+        return verdict.fail(run.not_judged(MEETS_R9.shown)).passed
     findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(
         run.returncode == 0 and not run.failed,
@@ -81,6 +98,9 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
 
 def _catches(verdict: Verdict, package: StudentPackage, system: System) -> None:
     run = run_speccheck(package, system)
+    if run.still_starting(system.runs):
+        verdict.fail(run.not_judged(system.shown))
+        return
     first = run.failed[0] if run.failed else run.error
     verdict.expect(
         run.returncode == 1 and bool(run.failed),

@@ -178,8 +178,14 @@ def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
                    + (' | '.join(errors) or ' | '.join(run.lines[-3:]) or 'nothing'))
 
 
-def _spec_command(package: StudentPackage, target: list[str]) -> str:
-    return ' '.join(['python -m speccheck live', package.shown(package.source / SPEC), *target])
+def _speccheck(package: StudentPackage, target: list[str]) -> spec_run.SpecRun:
+    """The student's spec against `target` (their system or the defect), running; a wait
+    that ran out on the three robots' nodes is repeated longer (spec_run.run_live)."""
+    return spec_run.run_live(
+        package, package.source / SPEC, target,
+        lambda words: ' '.join(['python -m speccheck live',
+                                package.shown(package.source / SPEC), *words]),
+        EXPECTED_NODES.__contains__)
 
 
 def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
@@ -190,10 +196,11 @@ def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
     if not spec.is_file():
         return verdict.fail(f'{package.shown(spec)} does not exist: write your spec there '
                             '(N6)').passed
-    target = ['--launch', package.name, LAUNCH_FILE]
-    run = spec_run.run_speccheck(package, 'live', spec, target, _spec_command(package, target))
+    run = _speccheck(package, ['--launch', package.name, LAUNCH_FILE])
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
+    if run.still_starting(EXPECTED_NODES.__contains__):
+        return verdict.fail(run.not_judged(f'your {LAUNCH_FILE}')).passed
     findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(run.returncode == 0 and not run.failed,
                           f'your spec passes your running system ({run.summary})',
@@ -202,9 +209,10 @@ def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
 
 
 def _spec_catches_defect(verdict: Verdict, package: StudentPackage) -> None:
-    target = ['--launch', *DEFECT]
-    run = spec_run.run_speccheck(package, 'live', package.source / SPEC, target,
-                                 _spec_command(package, target))
+    run = _speccheck(package, ['--launch', *DEFECT])
+    if run.still_starting(EXPECTED_NODES.__contains__):  # the capstone runs the same nodes
+        verdict.fail(run.not_judged(DEFECT_SHOWN))
+        return
     first = run.failed[0] if run.failed else run.error
     verdict.expect(run.returncode == 1 and bool(run.failed),
                    f'your spec catches {DEFECT_SHOWN}, where turtle3 is no inspector: {first}',

@@ -1,9 +1,18 @@
 """One run of the spec checker (`python -m speccheck`) in a student's workspace,
-as the checks of the spec lessons (6.8, 6.14, 7.1) grade with it."""
+as the checks of the spec lessons (6.8, 6.14, 7.1) grade with it.
+
+speccheck live waits 20 s for the spec's nodes.  On a busy machine a system
+with three robots can take longer to start them, and a wait that ran out on
+nodes the system does run says nothing about the spec: `run_live` repeats
+such a run with a longer wait, and `still_starting` tells a caller that a
+system never came up, so that it is never taken for a defect the spec caught.
+"""
 from __future__ import annotations
 
+import re
 import subprocess
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -11,6 +20,12 @@ from labkit.grading.student_package import StudentPackage
 
 #: Seconds; only stops a hung run, never a speed limit.
 SPEC_TIMEOUT = 180.0
+#: speccheck's finding when the launch's nodes did not all appear in time (labkit's words)
+NOT_STARTED = re.compile(
+    r'^launch: Timed out after (?P<seconds>[\d.]+) s waiting for nodes? (?P<nodes>.+?) from `')
+#: Seconds to wait for a system's nodes when speccheck's 20 s ran out on nodes it runs.
+SLOW_START = 120
+SHOWN_LINES = 6
 
 
 @dataclass(frozen=True)
@@ -27,6 +42,34 @@ class SpecRun:
         """The findings marked FAILED, without the marker."""
         return [line.strip().removeprefix('FAILED').strip()
                 for line in self.stdout.splitlines() if line.startswith('  FAILED')]
+
+    @property
+    def not_started(self) -> list[str]:
+        """The nodes the launch had not started when speccheck stopped waiting, if
+        that is a finding of this run (it waits `--timeout` seconds, 20 by default)."""
+        match = self._not_started()
+        return match['nodes'].split(', ') if match else []
+
+    def _not_started(self) -> re.Match[str] | None:
+        return next(filter(None, map(NOT_STARTED.match, self.failed)), None)
+
+    def still_starting(self, runs: Callable[[str], bool]) -> bool:
+        """Whether the wait ran out on nodes that the system does run (`runs(name)`):
+        then this run says nothing about the spec."""
+        return bool(self.not_started) and all(runs(node) for node in self.not_started)
+
+    def not_judged(self, system: str) -> str:
+        """Why the spec was not judged on `system`, with what speccheck saw of it."""
+        match = self._not_started()
+        assert match, 'not_judged is for a run whose wait ran out'
+        lines = self.stdout.strip().splitlines()
+        start = next(i for i, line in enumerate(lines) if line.startswith('  FAILED'))
+        below = lines[start + 1:-1]  # the finding's last lines, above the summary
+        seen = [line for line in below if line.startswith('Nodes in the graph')]
+        return (f'`{self.command}` did not start {match["nodes"]} within {match["seconds"]} s, '
+                f'so your spec was not judged on {system}: run the check again when the '
+                'machine is less busy. It reported:\n      '
+                + '\n      '.join([*seen, *below[-SHOWN_LINES:]]))
 
     @property
     def error(self) -> str:
@@ -49,3 +92,15 @@ def run_speccheck(package: StudentPackage, mode: str, spec: Path, target: list[s
                           cwd=package.workspace, capture_output=True, text=True,
                           timeout=SPEC_TIMEOUT, check=False)
     return SpecRun(shown, done.returncode, done.stdout, done.stderr)
+
+
+def run_live(package: StudentPackage, spec: Path, target: list[str],
+             command: Callable[[list[str]], str], runs: Callable[[str], bool]) -> SpecRun:
+    """`python -m speccheck live SPEC TARGET...` (`command(target)` is what a student
+    types); once more with `--timeout SLOW_START` when the first run's wait ran out on
+    nodes the system runs (`runs(name)`)."""
+    run = run_speccheck(package, 'live', spec, target, command(target))
+    if not run.still_starting(runs):
+        return run
+    longer = ['--timeout', str(SLOW_START), *target]
+    return run_speccheck(package, 'live', spec, longer, command(longer))
