@@ -34,11 +34,22 @@ _SOURCES = Path(__file__).resolve().parents[1] / 'src'
 _LAUNCH = importlib.util.find_spec('launch')
 CLEANROOM_IN_USE = _LAUNCH is not None and Path(_LAUNCH.origin).resolve().is_relative_to(_SOURCES)
 collect_ignore_glob = [] if CLEANROOM_IN_USE else ['*']
+#: the book's pytest plugin (tools/textbook), which leases each test process a domain
+BOOK_PLUGIN = 'textbook.pytest_plugin'
 
 
 @pytest.fixture(scope='session')
-def ros_domain() -> Iterator[int]:
-    """Lease a domain for the session and export it (with LOCALHOST discovery)."""
+def ros_domain(request: pytest.FixtureRequest) -> Iterator[int]:
+    """Lease a domain for the session and export it (with LOCALHOST discovery).
+
+    In the book's `make test` these tests share a session with tests/, whose
+    plugin has leased and exported this process's domain already: that one is
+    used, because a second lease, exported, would move every later test of the
+    session to another domain than the one the book's plugin guards.
+    """
+    if request.config.pluginmanager.has_plugin(BOOK_PLUGIN):
+        yield request.getfixturevalue('session_lease').domain_id
+        return
     # Imported here: the allocator is the clean room's launch_testing's, and over
     # a real ROS 2 this conftest must load without it (nothing is collected then).
     from launch_testing.domain_isolation import lease_domain
