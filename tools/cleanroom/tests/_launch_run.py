@@ -81,6 +81,14 @@ class LaunchResult:
         return [line[len(prefix):] for line in self.output.splitlines()
                 if line.startswith(prefix)]
 
+    def error_text(self) -> str:
+        """The [ERROR] [launch] message, continuation lines included."""
+        lines = self.output.splitlines()
+        prefix = '[ERROR] [launch]: '
+        start = next(i for i, line in enumerate(lines) if line.startswith(prefix))
+        rest = [line for line in lines[start + 1:] if line.startswith(' - ')]
+        return '\n'.join([lines[start][len(prefix):], *rest])
+
 
 def run_in_process(capture: pytest.CaptureFixture, entities: list, *, argv: tuple = (),
                    shutdown_after: float | None = None, debug: bool = False) -> LaunchResult:

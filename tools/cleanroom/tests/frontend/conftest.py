@@ -1,7 +1,8 @@
 """Fixtures of the front-end (XML / YAML) tests: write launch files, load and run them.
 
-Launches run in this process with a LaunchService, in the private ROS domain
-of ../conftest.py; none of these tests starts a process of its own.
+Launches run in this process with a LaunchService (../conftest.py's
+run_launch, so a launch file's processes are marked and checked as the
+launch/ and launch_ros/ tests' are), in the session's private ROS domain.
 """
 from __future__ import annotations
 
@@ -13,7 +14,7 @@ from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
-from launch import LaunchDescription, LaunchService
+from _launch_run import LaunchResult
 from launch.actions import IncludeLaunchDescription
 from launch.launch_description_sources import AnyLaunchDescriptionSource
 
@@ -43,39 +44,13 @@ def write(tmp_path: Path) -> Callable[[str, str], Path]:
     return write_file
 
 
-class Run:
-    """Exit code and screen output of one launch."""
-
-    def __init__(self, returncode: int, output: str) -> None:
-        self.returncode = returncode
-        self.output = output
-
-    def user_lines(self) -> list[str]:
-        """What <log> printed."""
-        prefix = '[INFO] [launch.user]: '
-        return [line[len(prefix):] for line in self.output.splitlines()
-                if line.startswith(prefix)]
-
-    def error_text(self) -> str:
-        """The [ERROR] [launch] message, continuation lines included."""
-        lines = self.output.splitlines()
-        prefix = '[ERROR] [launch]: '
-        start = next(i for i, line in enumerate(lines) if line.startswith(prefix))
-        rest = [line for line in lines[start + 1:] if line.startswith(' - ')]
-        return '\n'.join([lines[start][len(prefix):], *rest])
-
-
 @pytest.fixture
-def run_file(capsys: pytest.CaptureFixture) -> Callable[..., Run]:
+def run_file(run_launch: Callable[..., LaunchResult]) -> Callable[..., LaunchResult]:
     """Run a launch file of any format as `ros2 launch` does (arguments `name:=value`)."""
-    def run(path: Path, *arguments: str) -> Run:
-        capsys.readouterr()
-        service = LaunchService(argv=list(arguments))
-        service.include_launch_description(LaunchDescription([IncludeLaunchDescription(
+    def run(path: Path, *arguments: str) -> LaunchResult:
+        return run_launch([IncludeLaunchDescription(
             AnyLaunchDescriptionSource(str(path)),
-            launch_arguments=[tuple(a.split(':=', 1)) for a in arguments])]))
-        returncode = service.run()
-        return Run(returncode, capsys.readouterr().out)
+            launch_arguments=[tuple(a.split(':=', 1)) for a in arguments])], argv=arguments)
     return run
 
 
