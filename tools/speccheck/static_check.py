@@ -9,6 +9,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from rclhelpers.names import split_full_name
+
 from speccheck import values
 from speccheck.launch_walk import PlannedNode, StaticSystem, walk_launch_file
 from speccheck.report import Finding, Report, Status
@@ -148,14 +150,9 @@ def _identity(node_spec: NodeSpec, node: PlannedNode) -> Finding:
     return Finding(f'node {node_spec.name}', MET, evidence)
 
 
-def _split(full_name: str) -> tuple[str, str]:
-    namespace, _, name = full_name.rpartition('/')
-    return namespace or '/', name
-
-
 def _unnamed_candidate(node_spec: NodeSpec, system: StaticSystem,
                        used: set[int]) -> PlannedNode | None:
-    namespace, _ = _split(node_spec.name)
+    _, namespace = split_full_name(node_spec.name)
     for node in system.nodes:
         if node.name is not None or id(node) in used or node.namespace != namespace:
             continue
@@ -163,7 +160,7 @@ def _unnamed_candidate(node_spec: NodeSpec, system: StaticSystem,
             continue
         if node_spec.package and node.package != node_spec.package:
             continue
-        if node_spec.executable or _split(node_spec.name)[1] == node.executable:
+        if node_spec.executable or split_full_name(node_spec.name)[0] == node.executable:
             return node
     return None
 
@@ -172,7 +169,7 @@ def _missing_node_evidence(node_spec: NodeSpec, system: StaticSystem) -> str:
     text = 'no Node action starts it'
     started = [node.label for node in system.nodes]
     text += f'; the launch file would start: {", ".join(started) or "nothing"}'
-    skipped = [label for label in system.skipped if _split(node_spec.name)[1] in label]
+    skipped = [label for label in system.skipped if split_full_name(node_spec.name)[0] in label]
     if skipped:
         text += f'; not started because its condition is false: {", ".join(skipped)}'
     return text
