@@ -7,7 +7,8 @@ gets its own overlay workspace, built on first use, holding one copy of the
 student's package per case (`ex_starter`, `ex_solution`, `ex_wrong_<n>`).
 A student's overlay on a sourced workspace works the same way, and
 `-k ex611` builds only what exercise 6.11 needs.
-Each check launches its case as a student's terminal would.  New exercises
+Each check launches its case as a student's terminal would, from a process
+of its own that is graded again if it hangs inside DDS (_grading_process).  New exercises
 and wrong answers are picked up from labkit.checks and
 `snippets/<solutions>/wrong/` without touching this file.
 """
@@ -21,9 +22,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
-from labkit import checks, exercises
+from labkit import checks, exercises, observer
 from labkit.grading.student_package import StudentPackage
 from textbook import paths, workspace
+
+from . import _grading_process as grading_process
 
 VERDICT_NAMES = re.compile(r'^# Verdict names: (.+)$', re.MULTILINE)
 
@@ -138,7 +141,10 @@ def _on_one_worker(case: Case) -> object:
 def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
         case: Case, exercise_workspaces: Callable[[str], Path], lesson_environment):
     workspace = exercise_workspaces(case.exercise)
-    verdict = checks.find(case.exercise).grade(StudentPackage(workspace, case.package))
+    # This process watches nothing while the case runs: its observer would only
+    # see the case's launches stop (see _grading_process).
+    observer.close()
+    verdict = grading_process.grade(case.exercise, workspace, case.package)
     report = str(verdict)
     print(report)  # in the test log: what a student would read
     if case.kind == 'solution':

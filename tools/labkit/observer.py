@@ -72,7 +72,14 @@ def observer() -> Observer:
 
 
 @atexit.register
-def _close_observer() -> None:
+def close() -> None:
+    """Leave the graph now (the next question makes a new observer, with a first look).
+
+    For a process that is about to watch nothing for a while as other
+    processes start and stop many nodes: an idle participant still processes
+    every endpoint that goes away, which is where Fast DDS can deadlock its own
+    discovery threads (eProsima/Fast-DDS#6502).
+    """
     global _observer
     with _lock:
         if _observer is not None:
