@@ -22,6 +22,7 @@ from pathlib import Path
 
 import labkit
 import pytest
+from labkit.grading.capstone import ROBOT_NODES, robot_nodes
 from lifecycle_msgs.srv import GetState
 from textbook import paths, workspace
 
@@ -46,12 +47,6 @@ PACKAGE = 'capstone_bringup'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'
 HANG_GUARD = 60.0  # seconds; only stops a broken test from hanging, never a speed limit
 WORLD = 11.088889  # metres, turtlesim's square
-ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
-               'safety_monitor', 'mission_recorder')
-
-
-def robot_nodes(robot: str) -> list[str]:
-    return [f'/{robot}/{name}' for name in ROBOT_NODES]
 
 
 def robot_wiring(robot: str) -> Wiring:

@@ -22,6 +22,7 @@ from pathlib import Path
 import labkit
 import speccheck
 import yaml
+from labkit.grading.capstone import ROBOT_NODES
 from textbook import paths
 
 from .._polling import wait_for
@@ -43,8 +44,6 @@ REPLY = DRAFTS / 'response.md'
 DRAFT = BRINGUP / 'launch' / 'capstone_draft.launch.py'
 BOOK = 'capstone.launch.py'
 HANG_GUARD = 60.0  # seconds; only stops a broken test from hanging, never a speed limit
-ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
-               'safety_monitor', 'mission_recorder')
 TESTED = {(PACKAGE, name) for name in ('sim.launch.py', 'robot.launch.py', BOOK, DRAFT.name)}
 
 

@@ -19,6 +19,7 @@ import re
 from dataclasses import dataclass
 
 from labkit.grading import spec_run
+from labkit.grading.capstone import robot_nodes
 from labkit.grading.exercise import SNIPPETS, Exercise
 from labkit.grading.spec_run import SpecRun
 from labkit.grading.student_package import StudentPackage
@@ -32,9 +33,6 @@ SHOWN_FINDINGS = 6
 #: a ROS name in a finding; the capstone's all start with a turtle or turtlesim
 ROS_NAME = re.compile(r'(?<![\w.])/[A-Za-z_][\w/]*')
 IN_THE_SYSTEM = re.compile(r'^/(turtle\d+|turtlesim)(/|$)')
-#: the nodes of each robot, in its turtle's namespace (capstone_bringup's robot.launch.py)
-ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
-               'safety_monitor', 'mission_recorder')
 
 
 @dataclass(frozen=True)
@@ -49,8 +47,7 @@ class System:
 
     def runs(self, node: str) -> bool:
         """Whether `node` (a fully qualified name) is one of this system's robot nodes."""
-        return any(node == f'/turtle{number}/{name}'
-                   for number in range(1, self.robots + 1) for name in ROBOT_NODES)
+        return node in robot_nodes(*(f'turtle{n}' for n in range(1, self.robots + 1)))
 
 
 MEETS_R9 = System(('--launch', BOOK_PACKAGE, SYSTEM, 'robot_count:=3'),
@@ -71,7 +68,7 @@ def run_speccheck(package: StudentPackage, system: System) -> SpecRun:
     return spec_run.run_live(
         package, spec, list(system.launch),
         lambda target: f'python -m speccheck live {package.shown(spec)} {" ".join(target)}',
-        system.runs)
+        system.runs, system.shown)
 
 
 def _why(failed: list[str]) -> str:
@@ -86,8 +83,8 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
     run = run_speccheck(package, MEETS_R9)
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
-    if run.still_starting(MEETS_R9.runs):
-        return verdict.fail(run.not_judged(MEETS_R9.shown)).passed
+    if run.unjudged:
+        return verdict.fail(run.unjudged).passed
     findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(
         run.returncode == 0 and not run.failed,
@@ -98,8 +95,8 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
 
 def _catches(verdict: Verdict, package: StudentPackage, system: System) -> None:
     run = run_speccheck(package, system)
-    if run.still_starting(system.runs):
-        verdict.fail(run.not_judged(system.shown))
+    if run.unjudged:
+        verdict.fail(run.unjudged)
         return
     first = run.failed[0] if run.failed else run.error
     verdict.expect(

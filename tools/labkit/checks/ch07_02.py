@@ -18,18 +18,15 @@ from typing import Any
 import yaml
 
 from labkit.errors import LabkitError
-from labkit.grading import requirements
-from labkit.grading.exercise import SNIPPETS, Exercise
+from labkit.grading import capstone, requirements
+from labkit.grading.capstone import ROBOT_NODES, SIMULATOR
+from labkit.grading.exercise import Exercise
 from labkit.grading.launch_probe import LaunchProbe, probe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 from labkit.graph import GraphSnapshot, graph, read_parameters
 
 FILE = 'ex72_my_capstone.launch.py'
-ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
-               'safety_monitor', 'mission_recorder')
-SIMULATOR = '/turtlesim'
-CONFIG = SNIPPETS / 'capstone_bringup' / 'config'
 #: the arguments each run gets, and the robots it must start
 CASES = (({}, ('turtle1', 'turtle2')),
          ({'robots': 'turtle1,turtle3'}, ('turtle1', 'turtle3')))
@@ -41,7 +38,7 @@ ROBOT_NAMESPACE = re.compile(r'^/(turtle\d+)/')
 
 def route_of(robot: str) -> list[float]:
     """The waypoints config/<robot>.yaml gives the robot's patrol planner."""
-    sections = yaml.safe_load((CONFIG / f'{robot}.yaml').read_text())
+    sections = yaml.safe_load((capstone.CONFIG / f'{robot}.yaml').read_text())
     planner = sections['/**/patrol_planner']['ros__parameters']
     return [float(value) for value in planner['waypoints']]
 
@@ -128,7 +125,7 @@ def check_my_capstone(package: StudentPackage, verdict: Verdict) -> Verdict:
     if not requirements.files_installed(verdict, package):
         return verdict
     for arguments, robots in CASES:
-        expected = (SIMULATOR, *(f'/{robot}/{node}' for robot in robots for node in ROBOT_NODES))
+        expected = (SIMULATOR, *capstone.robot_nodes(*robots))
         run = probe(package, FILE, expected, arguments=arguments, timeout=LAUNCH_GUARD,
                     inspect=_inspect(robots))
         if _list_not_split(run, robots):

@@ -21,8 +21,9 @@ from typing import Any
 import yaml
 
 from labkit.errors import LabkitError
-from labkit.grading import requirements, spec_run
-from labkit.grading.exercise import SNIPPETS, Exercise
+from labkit.grading import capstone, requirements, spec_run
+from labkit.grading.capstone import ROBOT_NODES, SIMULATOR
+from labkit.grading.exercise import Exercise
 from labkit.grading.launch_probe import LaunchProbe, probe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
@@ -34,9 +35,7 @@ LAYERS = ('config/night_shift_inspector.yaml', 'config/night_shift_day.yaml',
           'config/night_shift_night.yaml')
 ROBOTS = ('turtle1', 'turtle2', 'turtle3')
 INSPECTOR = 'turtle3'
-ROBOT_NODES = ('wall_sensor', 'pose_estimator', 'patrol_planner', 'controller',
-               'safety_monitor', 'mission_recorder')
-EXPECTED_NODES = ('/turtlesim', *(f'/{robot}/{node}' for robot in ROBOTS for node in ROBOT_NODES))
+EXPECTED_NODES = (SIMULATOR, *capstone.robot_nodes(*ROBOTS))
 BAD_SHIFT = 'evening'
 #: Seconds; only stops a launch that never comes up (three robots on a loaded machine).
 STARTUP_GUARD = 60.0
@@ -56,7 +55,6 @@ class Value:
     source: str
 
 
-CAPSTONE_CONFIG = SNIPPETS / 'capstone_bringup' / 'config'
 #: What the brief's site layer (N2) makes of the inspector.
 INSPECTOR_VALUES = {'waypoints': [9.0, 8.0, 2.5, 8.0, 2.5, 3.0, 9.0, 3.0],
                     'max_linear': 0.6, 'stop_distance': 1.2}
@@ -67,7 +65,7 @@ def capstone_value(robot: str, node: str, name: str) -> Any:
     config/<robot>.yaml over it (robot.launch.py's two layers)."""
     value = None
     for layer in ('defaults.yaml', f'{robot}.yaml'):
-        sections = yaml.safe_load((CAPSTONE_CONFIG / layer).read_text()) or {}
+        sections = yaml.safe_load((capstone.CONFIG / layer).read_text()) or {}
         value = sections.get(f'/**/{node}', {}).get('ros__parameters', {}).get(name, value)
     return value
 
@@ -178,14 +176,15 @@ def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
                    + (' | '.join(errors) or ' | '.join(run.lines[-3:]) or 'nothing'))
 
 
-def _speccheck(package: StudentPackage, target: list[str]) -> spec_run.SpecRun:
-    """The student's spec against `target` (their system or the defect), running; a wait
-    that ran out on the three robots' nodes is repeated longer (spec_run.run_live)."""
+def _speccheck(package: StudentPackage, target: list[str], system: str) -> spec_run.SpecRun:
+    """The student's spec against `target` (their system or the defect, which runs the
+    same nodes), running; a wait that ran out on the three robots' nodes is repeated
+    longer (spec_run.run_live)."""
     return spec_run.run_live(
         package, package.source / SPEC, target,
         lambda words: ' '.join(['python -m speccheck live',
                                 package.shown(package.source / SPEC), *words]),
-        EXPECTED_NODES.__contains__)
+        EXPECTED_NODES.__contains__, system)
 
 
 def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
@@ -196,11 +195,11 @@ def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
     if not spec.is_file():
         return verdict.fail(f'{package.shown(spec)} does not exist: write your spec there '
                             '(N6)').passed
-    run = _speccheck(package, ['--launch', package.name, LAUNCH_FILE])
+    run = _speccheck(package, ['--launch', package.name, LAUNCH_FILE], f'your {LAUNCH_FILE}')
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
-    if run.still_starting(EXPECTED_NODES.__contains__):
-        return verdict.fail(run.not_judged(f'your {LAUNCH_FILE}')).passed
+    if run.unjudged:
+        return verdict.fail(run.unjudged).passed
     findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(run.returncode == 0 and not run.failed,
                           f'your spec passes your running system ({run.summary})',
@@ -209,9 +208,9 @@ def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
 
 
 def _spec_catches_defect(verdict: Verdict, package: StudentPackage) -> None:
-    run = _speccheck(package, ['--launch', *DEFECT])
-    if run.still_starting(EXPECTED_NODES.__contains__):  # the capstone runs the same nodes
-        verdict.fail(run.not_judged(DEFECT_SHOWN))
+    run = _speccheck(package, ['--launch', *DEFECT], DEFECT_SHOWN)
+    if run.unjudged:
+        verdict.fail(run.unjudged)
         return
     first = run.failed[0] if run.failed else run.error
     verdict.expect(run.returncode == 1 and bool(run.failed),

@@ -4,11 +4,12 @@ as the checks of the spec lessons (6.8, 6.14, 7.1) grade with it.
 speccheck live waits 20 s for the spec's nodes.  On a busy machine a system
 with three robots can take longer to start them, and a wait that ran out on
 nodes the system does run says nothing about the spec: `run_live` repeats
-such a run with a longer wait, and `still_starting` tells a caller that a
-system never came up, so that it is never taken for a defect the spec caught.
+such a run with a longer wait, and says in `SpecRun.unjudged` when the system
+never came up, so that it is never taken for a defect the spec caught.
 """
 from __future__ import annotations
 
+import dataclasses
 import re
 import subprocess
 import sys
@@ -36,6 +37,8 @@ class SpecRun:
     returncode: int
     stdout: str
     stderr: str
+    #: why the spec was not judged (the system never started nodes it runs), or ''
+    unjudged: str = ''
 
     @property
     def failed(self) -> list[str]:
@@ -53,15 +56,15 @@ class SpecRun:
     def _not_started(self) -> re.Match[str] | None:
         return next(filter(None, map(NOT_STARTED.match, self.failed)), None)
 
-    def still_starting(self, runs: Callable[[str], bool]) -> bool:
+    def _still_starting(self, runs: Callable[[str], bool]) -> bool:
         """Whether the wait ran out on nodes that the system does run (`runs(name)`):
         then this run says nothing about the spec."""
         return bool(self.not_started) and all(runs(node) for node in self.not_started)
 
-    def not_judged(self, system: str) -> str:
+    def _not_judged(self, system: str) -> str:
         """Why the spec was not judged on `system`, with what speccheck saw of it."""
         match = self._not_started()
-        assert match, 'not_judged is for a run whose wait ran out'
+        assert match, '_not_judged is for a run whose wait ran out'
         lines = self.stdout.strip().splitlines()
         start = next(i for i, line in enumerate(lines) if line.startswith('  FAILED'))
         below = lines[start + 1:-1]  # the finding's last lines, above the summary
@@ -95,12 +98,17 @@ def run_speccheck(package: StudentPackage, mode: str, spec: Path, target: list[s
 
 
 def run_live(package: StudentPackage, spec: Path, target: list[str],
-             command: Callable[[list[str]], str], runs: Callable[[str], bool]) -> SpecRun:
+             command: Callable[[list[str]], str], runs: Callable[[str], bool],
+             system: str) -> SpecRun:
     """`python -m speccheck live SPEC TARGET...` (`command(target)` is what a student
     types); once more with `--timeout SLOW_START` when the first run's wait ran out on
-    nodes the system runs (`runs(name)`)."""
+    nodes the system runs (`runs(name)`), and `unjudged` set when that one's did too
+    (`system` names the system to the student)."""
     run = run_speccheck(package, 'live', spec, target, command(target))
-    if not run.still_starting(runs):
+    if not run._still_starting(runs):
         return run
     longer = ['--timeout', str(SLOW_START), *target]
-    return run_speccheck(package, 'live', spec, longer, command(longer))
+    run = run_speccheck(package, 'live', spec, longer, command(longer))
+    if run._still_starting(runs):
+        return dataclasses.replace(run, unjudged=run._not_judged(system))
+    return run
