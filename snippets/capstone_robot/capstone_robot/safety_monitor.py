@@ -6,6 +6,11 @@ ahead is closer than ``stop_distance`` (turning stays allowed, so the
 robot can turn away), and every motion is cut when the wall sensor has
 been silent for ``sensor_timeout`` seconds: a blind robot stands still.
 ``safety_stop`` says whether a command is being held back.
+
+A wall stop is released only when the wall is ``release_margin`` further
+away than ``stop_distance`` (hysteresis): a robot stopped just inside the
+limit would otherwise be let go by every noisy reading that lands just
+outside it, and creep towards the wall.
 """
 import time
 
@@ -23,7 +28,9 @@ class SafetyMonitor(Node):
         super().__init__('safety_monitor')
         self.stop_distance = self.declare_parameter('stop_distance', 0.8).value
         self.sensor_timeout = self.declare_parameter('sensor_timeout', 1.0).value
+        self.release_margin = self.declare_parameter('release_margin', 0.1).value
         self.reading = None
+        self.wall_close = False  # the wall ahead is within the limit: no forward motion
         self.reading_time = None
         self.reason = None  # why commands are held back now; None: they pass
         self.create_subscription(WallReading, 'wall_reading', self.on_reading, 10)
@@ -35,12 +42,14 @@ class SafetyMonitor(Node):
     def on_reading(self, reading: WallReading):
         self.reading = reading
         self.reading_time = time.monotonic()
+        limit = self.stop_distance + (self.release_margin if self.wall_close else 0.0)
+        self.wall_close = reading.ahead < limit
 
     def why_stop(self, command: Twist) -> str | None:
         """The reason to hold this command back, or None if it is safe."""
         if self.reading_time is None or time.monotonic() - self.reading_time > self.sensor_timeout:
             return f'no wall reading for {self.sensor_timeout:.1f} s'
-        if command.linear.x > 0.0 and self.reading.ahead < self.stop_distance:
+        if command.linear.x > 0.0 and self.wall_close:
             return (f'wall {self.reading.ahead:.2f} m ahead '
                     f'(limit {self.stop_distance:.2f} m)')
         return None
