@@ -33,20 +33,26 @@ for ahead in json.loads(input()):
     monitor.on_reading(WallReading(ahead=ahead, nearest=ahead))
     forward = Twist()
     forward.linear.x = 1.0
-    decisions.append(monitor.why_stop(forward) is not None)
+    decisions.append(monitor.why_stop(forward))
 print(json.dumps(decisions))
 monitor.destroy_node()
 rclpy.shutdown()
 """
 
 
-def _held(ros_env: dict[str, str], readings: list[float], *ros_args: str) -> list[bool]:
-    """For each wall reading in turn: is a forward command held back after it?"""
+def _reasons(ros_env: dict[str, str], readings: list[float], *ros_args: str
+             ) -> list[str | None]:
+    """For each wall reading in turn: why a forward command after it is held back (None:
+    it passes)."""
     result = subprocess.run([sys.executable, '-c', DECISIONS, *ros_args], env=ros_env,
                             input=json.dumps(readings), text=True, capture_output=True,
                             timeout=HANG_GUARD, check=False)
     assert result.returncode == 0, result.stdout + result.stderr
     return json.loads(result.stdout.splitlines()[-1])
+
+
+def _held(ros_env: dict[str, str], readings: list[float], *ros_args: str) -> list[bool]:
+    return [reason is not None for reason in _reasons(ros_env, readings, *ros_args)]
 
 
 def test_a_wall_stop_holds_through_readings_just_outside_the_limit(ros_env):
@@ -62,3 +68,8 @@ def test_a_wall_stop_holds_through_readings_just_outside_the_limit(ros_env):
 ], ids=['no margin', 'a wide margin'])
 def test_release_margin_is_a_parameter(ros_env, margin, readings, held):
     assert _held(ros_env, readings, '-p', f'release_margin:={margin}') == held
+
+
+def test_the_reason_names_the_limit_the_reading_was_judged_by(ros_env):
+    assert _reasons(ros_env, [0.79, 0.85]) == ['wall 0.79 m ahead (limit 0.80 m)',
+                                               'wall 0.85 m ahead (limit 0.90 m)']

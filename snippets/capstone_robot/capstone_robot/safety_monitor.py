@@ -31,6 +31,7 @@ class SafetyMonitor(Node):
         self.release_margin = self.declare_parameter('release_margin', 0.1).value
         self.reading = None
         self.wall_close = False  # the wall ahead is within the limit: no forward motion
+        self.limit = self.stop_distance  # the limit the latest reading was judged by
         self.reading_time = None
         self.reason = None  # why commands are held back now; None: they pass
         self.create_subscription(WallReading, 'wall_reading', self.on_reading, 10)
@@ -42,8 +43,8 @@ class SafetyMonitor(Node):
     def on_reading(self, reading: WallReading):
         self.reading = reading
         self.reading_time = time.monotonic()
-        limit = self.stop_distance + (self.release_margin if self.wall_close else 0.0)
-        self.wall_close = reading.ahead < limit
+        self.limit = self.stop_distance + (self.release_margin if self.wall_close else 0.0)
+        self.wall_close = reading.ahead < self.limit
 
     def why_stop(self, command: Twist) -> str | None:
         """The reason to hold this command back, or None if it is safe."""
@@ -51,7 +52,7 @@ class SafetyMonitor(Node):
             return f'no wall reading for {self.sensor_timeout:.1f} s'
         if command.linear.x > 0.0 and self.wall_close:
             return (f'wall {self.reading.ahead:.2f} m ahead '
-                    f'(limit {self.stop_distance:.2f} m)')
+                    f'(limit {self.limit:.2f} m)')
         return None
 
     def on_command(self, command: Twist):
