@@ -21,13 +21,15 @@ import pytest
 from textbook import paths
 from textbook.myst import fences
 
-from ._launch_log import ENDED, STARTED
-from ._wiring import Wiring, settled_graph, wiring
+from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
+from ._wiring import Wiring, settled_graph, wiring_of
 
 LESSON = paths.LESSONS / 'ch06/L3/11_one_system_three_formats.md'
 PACKAGE = 'my_robot_pkg'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
+
+pytestmark = DDS_SHUTDOWN_HANG  # robot_controller hung in Fast DDS shutdown in CI, as in 6.8
 
 
 @dataclass(frozen=True)
@@ -123,7 +125,9 @@ def test_launch_starts_its_system(case: Case, ros_env):
         run.wait_for_nodes(list(case.nodes), timeout=HANG_GUARD)
         expected = {name: (tuple(sorted(pubs)), tuple(sorted(subs)))
                     for name, (pubs, subs) in case.topics.items()}
-        snapshot = settled_graph(expected, HANG_GUARD)
+        # only the topics this system uses: a node SIGKILLed by an earlier test on this
+        # worker (the Fast DDS shutdown hang) stays on the graph until its lease ends
+        snapshot = settled_graph(expected, HANG_GUARD, only_expected=True)
         got = {node: _typed(labkit.read_parameters(node), list(wanted))
                for node, wanted in case.nodes.items()}
         still_running = run.running
@@ -133,8 +137,8 @@ def test_launch_starts_its_system(case: Case, ros_env):
     assert 'process has died' not in output, output
     started = [m.group(1) for line in output.splitlines() if (m := STARTED.match(line))]
     assert len(started) == len(case.nodes), output  # no process beyond the expected nodes
-    assert sorted(snapshot.nodes) == sorted(case.nodes), output
-    assert wiring(snapshot) == expected, str(snapshot)
+    assert set(case.nodes) <= set(snapshot.nodes), output  # extra ones: ghosts (above)
+    assert wiring_of(snapshot, expected, only_expected=True) == expected, str(snapshot)
     assert got == {node: _typed(wanted, list(wanted)) for node, wanted in case.nodes.items()}
     ended = [m.group(1) for line in output.splitlines() if (m := ENDED.match(line))]
     assert exit_code == 0 and sorted(ended) == sorted(started), output
