@@ -31,9 +31,9 @@ LESSON = paths.LESSONS / 'ch06/L3/13_configuration_management.md'
 PACKAGE = 'rover_config'
 SOURCE = paths.SNIPPETS / PACKAGE
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
+NODES = ('sensor_publisher', 'data_processor', 'robot_controller')
 
 pytestmark = DDS_SHUTDOWN_HANG  # robot_controller hung in Fast DDS shutdown in CI, as in 6.8
-NODES = ('sensor_publisher', 'data_processor', 'robot_controller')
 
 
 @dataclass(frozen=True)
