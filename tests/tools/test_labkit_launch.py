@@ -26,6 +26,15 @@ def test_launch_shows_the_command_and_finds_its_nodes(ros_env):
     assert run.returncode == 0
     assert 'process has finished cleanly' in run.output()
     assert run.lines == run.output().splitlines()
+    # A terminal's Ctrl-C: each node got SIGINT once, from the group signal, and
+    # the interactive launch sent none of its own (Jazzy's does without a terminal).
+    assert "sending signal 'SIGINT'" not in run.output()
+
+
+def test_a_started_command_has_a_terminal_as_stdin(ros_env):
+    with labkit.start(['python3', '-c', 'import sys; print("tty", sys.stdin.isatty())'],
+                      env=ros_env) as command:
+        assert command.wait_for_output('^tty') == 'tty True'
 
 
 def test_launch_arguments_become_name_value_pairs(ros_env):

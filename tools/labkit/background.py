@@ -2,13 +2,15 @@
 
 Lessons start a launch, look at it, then stop it, all from notebook cells.
 The process gets a session of its own, so that stopping it reaches every
-node it started (they share its process group), and a watchdog sidecar so
-that it cannot outlive a kernel that crashes or is killed.
+node it started (they share its process group), a pseudo-terminal as its
+standard input, as in a student's shell, and a watchdog sidecar so that it
+cannot outlive a kernel that crashes or is killed.
 """
 from __future__ import annotations
 
 import atexit
 import os
+import pty
 import re
 import shlex
 import signal
@@ -57,10 +59,21 @@ class Background:
         self._stopped = False
         environment = dict(os.environ if env is None else env)
         environment.setdefault('PYTHONUNBUFFERED', '1')  # output arrives as it is printed
-        self._process = subprocess.Popen(
-            self.argv, env=environment, cwd=cwd, stdin=subprocess.DEVNULL,
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors='replace',
-            start_new_session=True)
+        # A terminal as stdin: Jazzy's `ros2 launch` is then interactive, as in a
+        # shell, and leaves SIGINT to the terminal's Ctrl-C (stop() sends it to the
+        # group); without one it runs `--noninteractive` and sends every node a second
+        # SIGINT of its own.  Nothing reads it; output stays on the pipe.
+        self._terminal, terminal_side = pty.openpty()
+        try:
+            self._process = subprocess.Popen(
+                self.argv, env=environment, cwd=cwd, stdin=terminal_side,
+                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, errors='replace',
+                start_new_session=True)
+        except BaseException:
+            os.close(self._terminal)
+            raise
+        finally:
+            os.close(terminal_side)
         self.pid = self._process.pid
         self._reader = threading.Thread(target=self._read_output, daemon=True,
                                         name=f'labkit-output-{self.pid}')
@@ -176,8 +189,9 @@ class Background:
         exit code; calling it again just returns the exit code.
 
         SIGINT goes to the whole group because that is what Ctrl-C in a
-        terminal does, and what `ros2 launch` and `ros2 run` expect: in Jazzy
-        neither passes SIGINT on to its nodes (they got it from the terminal).
+        terminal does, and what `ros2 launch` and `ros2 run` expect there: in
+        Jazzy neither passes SIGINT on to its nodes when its standard input is
+        a terminal (they got it from the terminal), so each node gets it once.
         """
         if not self._stopped:
             self._stopped = True
@@ -196,6 +210,7 @@ class Background:
             self._reader.join(timeout=5)
             self._watchdog.terminate()
             self._watchdog.wait()
+            os.close(self._terminal)
             with _running_lock:
                 _running.discard(self)
         return self._returncode

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import os
+import pty
 import signal
 import subprocess
 import sys
@@ -62,14 +63,24 @@ def test_child_ignoring_sigint_stops_at_sigterm(run_launch):
 def start_launch(cli_env: dict) -> Iterator[Callable[..., subprocess.Popen]]:
     """Start `ros2 launch ARGS` and return it once its 4 processes have started.
 
-    Whatever the test does, the launch is killed and reaped afterwards.
+    `terminal=True` gives it a pseudo-terminal as standard input, as a shell
+    in a terminal does; otherwise its stdin is /dev/null, as in a script, CI
+    or a notebook.  Whatever the test does, the launch is killed and reaped
+    afterwards.
     """
     started: list[subprocess.Popen] = []
+    terminals: list[int] = []
 
-    def start(*args: str) -> subprocess.Popen:
+    def start(*args: str, terminal: bool = False) -> subprocess.Popen:
+        stdin: int = subprocess.DEVNULL
+        if terminal:
+            main_side, stdin = pty.openpty()
+            terminals.append(main_side)
         proc = subprocess.Popen([ROS2, 'launch', *args], env=cli_env, stdout=subprocess.PIPE,
-                                stderr=subprocess.STDOUT, text=True, stdin=subprocess.DEVNULL,
+                                stderr=subprocess.STDOUT, text=True, stdin=stdin,
                                 start_new_session=True)  # its own group, as in a terminal
+        if terminal:
+            os.close(stdin)
         started.append(proc)
         _wait_for_starts(proc, 4)
         return proc
@@ -79,6 +90,8 @@ def start_launch(cli_env: dict) -> Iterator[Callable[..., subprocess.Popen]]:
         if proc.poll() is None:
             os.killpg(proc.pid, signal.SIGKILL)
         proc.communicate()
+    for main_side in terminals:
+        os.close(main_side)
 
 
 def _wait_for_starts(proc: subprocess.Popen, count: int) -> list[str]:
@@ -97,7 +110,7 @@ def _children(proc: subprocess.Popen) -> list[psutil.Process]:
 
 def test_ctrl_c_stops_all_children(start_launch):
     """Ctrl-C in a terminal: SIGINT to the whole group; the launch does not send it again."""
-    proc = start_launch('cr_pkg', 'procs.launch.py')
+    proc = start_launch('cr_pkg', 'procs.launch.py', terminal=True)
     children = _children(proc)
     assert len(children) >= 3  # the sleepers; 'hello' may already have exited
     os.killpg(proc.pid, signal.SIGINT)
@@ -112,7 +125,7 @@ def test_ctrl_c_stops_all_children(start_launch):
 
 def test_sigint_to_the_launch_only_escalates_to_sigterm(start_launch):
     """Interactive launch, SIGINT to it alone: children get SIGTERM after sigterm_timeout."""
-    proc = start_launch('cr_pkg', 'procs.launch.py', 'sigterm_timeout:=0.3')
+    proc = start_launch('cr_pkg', 'procs.launch.py', 'sigterm_timeout:=0.3', terminal=True)
     children = _children(proc)
     proc.send_signal(signal.SIGINT)
     out, _ = proc.communicate(timeout=20)
@@ -130,6 +143,19 @@ def test_sigint_to_a_noninteractive_launch_is_sent_on(start_launch):
     out, _ = proc.communicate(timeout=20)
     assert proc.returncode == 0
     assert "sending signal 'SIGINT' to process[sleeper-2]" in out
+    assert 'escalating' not in out
+    _gone, alive = psutil.wait_procs(children, timeout=5)
+    assert not alive
+
+
+def test_a_launch_without_a_terminal_is_noninteractive(start_launch):
+    """As Jazzy's: stdin not a terminal turns --noninteractive on; SIGINT is sent on at once."""
+    proc = start_launch('cr_pkg', 'procs.launch.py')
+    children = _children(proc)
+    proc.send_signal(signal.SIGINT)
+    out, _ = proc.communicate(timeout=20)
+    assert proc.returncode == 0
+    assert "[INFO] [sleeper-1]: sending signal 'SIGINT' to process[sleeper-1]" in out
     assert 'escalating' not in out
     _gone, alive = psutil.wait_procs(children, timeout=5)
     assert not alive

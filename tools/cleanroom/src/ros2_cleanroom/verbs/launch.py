@@ -141,6 +141,16 @@ def launch_a_launch_file(path: str, arguments: list[tuple[str, str]], *, debug: 
     return service.run()
 
 
+def _stdin_is_a_terminal() -> bool:
+    """Jazzy's `ros2 launch` runs non-interactively when standard input is no terminal.
+
+    Observed on the reference: with stdin from /dev/null or a pipe, SIGINT to
+    `ros2 launch` alone is sent on to every process at once, as `-n` does; with
+    a terminal it is not (the terminal's Ctrl-C reached the whole group).
+    """
+    return sys.stdin is not None and sys.stdin.isatty()
+
+
 def main(argv: list[str]) -> int:
     """Entry point of `ros2 launch`; returns the exit code."""
     args, unknown = _parser().parse_known_args(argv)
@@ -167,6 +177,6 @@ def main(argv: list[str]) -> int:
     if args.show_all_subprocesses_output:
         os.environ['OVERRIDE_LAUNCH_PROCESS_OUTPUT'] = 'both'
     return launch_a_launch_file(path, arguments, debug=args.debug,
-                                noninteractive=args.noninteractive,
+                                noninteractive=args.noninteractive or not _stdin_is_a_terminal(),
                                 launch_prefix=args.launch_prefix,
                                 launch_prefix_filter=args.launch_prefix_filter)
