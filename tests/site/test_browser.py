@@ -36,6 +36,9 @@ FLAGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-
          '--window-size=1600,1200']
 WAIT = 30  # seconds, at most, for any state of a page
 LESSON_PAGES = [lesson.site_path.removesuffix('.ipynb') + '/' for lesson in load_all()]
+#: Pages with a `labkit.exercises.check(...)` cell: each shows at least one verdict.
+EXERCISE_PAGES = {lesson.site_path.removesuffix('.ipynb') + '/' for lesson in load_all()
+                  if 'exercises.check(' in lesson.text}
 
 
 class _QuietHandler(SimpleHTTPRequestHandler):
@@ -122,6 +125,15 @@ def test_lesson_page_in_the_browser(browser, server, page):
         assert fold.get_attribute('open') is None, f'{page}: a solution is unfolded'
         inside = fold.find_elements(By.CSS_SELECTOR, ':scope > .jp-Cell')
         assert inside and not any(cell.is_displayed() for cell in inside)
+
+    article = browser.find_element(By.CSS_SELECTOR, 'article').get_attribute('textContent')
+    assert 'Verdict(' not in article, f'{page}: a verdict shows as a Python repr'
+    verdicts = browser.find_elements(By.CSS_SELECTOR, 'article .labkit-verdict')
+    assert verdicts or page not in EXERCISE_PAGES, f'{page}: no exercise verdict shown'
+    for verdict in verdicts:
+        items = [item.get_attribute('textContent')
+                 for item in verdict.find_elements(By.CSS_SELECTOR, 'ul > li')]
+        assert items and all(item[:2] in ('✓ ', '✗ ') for item in items), (page, items)
 
     assert browser.find_elements(By.CSS_SELECTOR, '.textbook-header a, .textbook-header')
     assert browser.find_elements(By.CSS_SELECTOR, '.textbook-key-points h2#key-points')

@@ -15,7 +15,7 @@ SNIPPETS = book_snippets()
 STARTERS = SNIPPETS / 'starters' / PACKAGE
 
 
-@dataclass
+@dataclass(repr=False)  # shown as the ✓/✗ list (Verdict._repr_pretty_), never as a repr
 class ExerciseVerdict(Verdict):
     """The verdict of one exercise, knowing the exercise's files: a check's
     `requirements.files_installed(verdict, package)` reads them from here, so

@@ -1,6 +1,7 @@
 """What a check found: each requirement met or not, in words a student can act on."""
 from __future__ import annotations
 
+import html
 from dataclasses import dataclass, field
 
 from labkit.errors import LabkitError
@@ -41,5 +42,15 @@ class Verdict:
         lines = [f'  {"✓" if met else "✗"} {sentence}' for met, sentence in self.results]
         return '\n'.join([head, *lines])
 
+    # How a notebook shows a verdict: as the ✓/✗ list of str(), in Jupyter's
+    # text form and, on the site and in JupyterLab, as an HTML list.  A subclass
+    # must be a @dataclass(repr=False): IPython prefers a __repr__ defined
+    # lower in the class tree to this _repr_pretty_.
     def _repr_pretty_(self, printer: object, cycle: bool) -> None:  # IPython display
         printer.text(str(self))  # type: ignore[attr-defined]
+
+    def _repr_html_(self) -> str:
+        head, *lines = str(self).splitlines()
+        items = ''.join(f'<li>{html.escape(line.strip())}</li>' for line in lines)
+        return (f'<div class="labkit-verdict"><p>{html.escape(head)}</p>'
+                f'<ul>{items}</ul></div>')
