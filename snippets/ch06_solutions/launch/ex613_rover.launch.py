@@ -15,7 +15,7 @@ def generate_launch_description():
     config = PathJoinSubstitution([FindPackageShare('rover_config'), 'config'])
     layers = [
         ParameterFile(PathJoinSubstitution([config, 'defaults.yaml']), allow_substs=True),
-        PathJoinSubstitution([config, 'robots', [robot, '.yaml']]),
+        [PathJoinSubstitution([config, 'robots', robot]), '.yaml'],
         # [START site_layer]
         # last, so the warehouse wins over the robot's file
         PathJoinSubstitution([FindPackageShare('my_ws_exercises'), 'config',

@@ -38,9 +38,9 @@ def generate_launch_description():
         # 1. package defaults; $(var robot) in the file becomes the argument's value
         ParameterFile(PathJoinSubstitution([config, 'defaults.yaml']), allow_substs=True),
         # 2. the robot's file, chosen by the argument `robot`
-        PathJoinSubstitution([config, 'robots', [robot, '.yaml']]),
+        [PathJoinSubstitution([config, 'robots', robot]), '.yaml'],
         # 3. the site's file, chosen by the argument `site`: applied last
-        PathJoinSubstitution([config, 'sites', [site, '.yaml']]),
+        [PathJoinSubstitution([config, 'sites', site]), '.yaml'],
     ]
     # [END layers]
 

@@ -24,7 +24,7 @@ def generate_launch_description():
         # TODO: is this the right place for the warehouse?
         PathJoinSubstitution([FindPackageShare('my_ws_exercises'), 'config',
                               'ex613_warehouse.yaml']),
-        PathJoinSubstitution([config, 'robots', [robot, '.yaml']]),
+        [PathJoinSubstitution([config, 'robots', robot]), '.yaml'],
     ]
     return LaunchDescription([
         DeclareLaunchArgument('robot', default_value='scout',

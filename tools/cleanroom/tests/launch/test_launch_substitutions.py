@@ -75,6 +75,21 @@ def test_path_join(context):
         PathJoinSubstitution(['/a']) / 'b'
 
 
+def test_path_join_takes_one_substitution_per_component(context):
+    """Observed on Jazzy: the components are normalised as SomeSubstitutionsType, so
+    a list inside (text joined within one component) is refused when the launch
+    file is loaded, and describe() joins the components with ' + '."""
+    with pytest.raises(TypeError) as refused:
+        PathJoinSubstitution(['/opt', [LaunchConfiguration('robot'), '.yaml']])
+    assert str(refused.value) == ("Failed to normalize given item of type '<class 'list'>', "
+                                  "when only 'str' or 'launch.Substitution' were expected.")
+    path = PathJoinSubstitution(['a', LaunchConfiguration('robot'), 't'])
+    assert [type(s).__name__ for s in path.substitutions] == [
+        'TextSubstitution', 'LaunchConfiguration', 'TextSubstitution']
+    assert path.describe() == "PathJoin(''a' + LaunchConfig('robot') + 't'')"
+    assert PathJoinSubstitution('abc').perform(context) == 'abc'
+
+
 def test_python_expression(context):
     assert PythonExpression(['2 * ', LaunchConfiguration('radius')]).perform(context) == '0.2'
     assert PythonExpression('pi > 3 and math.e > 2').perform(context) == 'True'

@@ -2,11 +2,10 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from ..substitution import Substitution
-from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
+from ..utilities import normalize_to_list_of_substitutions
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -14,23 +13,28 @@ if TYPE_CHECKING:
 
 
 class PathJoinSubstitution(Substitution):
-    """os.path.join of components, each of which may itself be substitutions."""
+    """os.path.join of the performed substitutions, one path component each.
 
-    def __init__(self, substitutions: Iterable[SomeSubstitutionsType]) -> None:
+    As in Jazzy, `substitutions` is normalised like any SomeSubstitutionsType:
+    each item is a str or a Substitution, and a list inside the list (to
+    concatenate text within one component) is refused with the TypeError of
+    normalize_to_list_of_substitutions.
+    """
+
+    def __init__(self, substitutions: SomeSubstitutionsType) -> None:
         super().__init__()
-        self.__components = [normalize_to_list_of_substitutions(c) for c in substitutions]
+        self.__substitutions = normalize_to_list_of_substitutions(substitutions)
 
     @property
-    def substitutions(self) -> list[list[Substitution]]:
-        """The components, each a list of substitutions."""
-        return self.__components
+    def substitutions(self) -> list[Substitution]:
+        """The path components, one substitution each."""
+        return self.__substitutions
 
     def describe(self) -> str:
-        """Return a description of the components."""
-        parts = ', '.join(' + '.join(s.describe() for s in c) for c in self.__components)
-        return f'PathJoin([{parts}])'
+        """Return a description of the components, as Jazzy writes it."""
+        return f"PathJoin('{' + '.join(s.describe() for s in self.__substitutions)}')"
 
     def perform(self, context: LaunchContext) -> str:
         """Return the joined path."""
-        parts = [perform_substitutions(context, c) for c in self.__components]
+        parts = [context.perform_substitution(s) for s in self.__substitutions]
         return os.path.join(*parts) if parts else ''

@@ -19,7 +19,7 @@ def generate_launch_description():
         ParameterFile(PathJoinSubstitution([config, 'defaults.yaml']), allow_substs=True),
         PathJoinSubstitution([FindPackageShare('my_ws_exercises'), 'config',
                               'ex613_warehouse.yaml']),
-        PathJoinSubstitution([config, 'robots', [robot, '.yaml']]),
+        [PathJoinSubstitution([config, 'robots', robot]), '.yaml'],
     ]
     return LaunchDescription([
         DeclareLaunchArgument('robot', default_value='scout',
