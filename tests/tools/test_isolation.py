@@ -137,6 +137,34 @@ def test_reaper_stops_only_processes_of_its_lease():
             ours.wait()
 
 
+def test_the_reaper_stops_a_ros2_daemon_without_calling_it_a_leftover(monkeypatch):
+    """Jazzy's `ros2` leaves its daemon running on purpose (a command line as
+    observed there: `... --name ros2-daemon --ros-domain-id N ...`); the build
+    stops it after a lesson without failing the lesson, and waits for nothing."""
+    daemon_like = ['python3', '-c', 'import time; time.sleep(300)', '--name', 'ros2-daemon',
+                   '--ros-domain-id', '7']
+    with isolation.acquire_domain() as mine:
+        env = mine.apply(dict(os.environ))
+        daemon = subprocess.Popen(daemon_like, env=env)
+        other = subprocess.Popen(['sleep', '300'], env=env)
+        try:
+            assert reaper.reap([mine.token], grace=0.2) == [f'pid {other.pid}: sleep 300']
+            assert daemon.wait(timeout=10) is not None
+            daemon = subprocess.Popen(daemon_like, env=env)
+
+            def no_waiting(_seconds: float) -> None:
+                raise AssertionError('the reaper waited for the daemon to end by itself')
+
+            with monkeypatch.context() as patch:
+                patch.setattr(reaper.time, 'sleep', no_waiting)
+                assert reaper.reap([mine.token], grace=30) == []
+            assert daemon.wait(timeout=10) is not None
+        finally:
+            for proc in (daemon, other):
+                proc.kill()
+                proc.wait()
+
+
 def test_an_id_just_given_back_is_not_the_next_one_handed_out():
     """A released ID may still carry the last run's lingering nodes: leases start at a
     random place in the range, so ten lease-release rounds do not keep getting one ID

@@ -25,6 +25,7 @@ from rclhelpers.names import is_hidden
 
 from labkit import observer
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
+from labkit.ros2_command import find_ros2, missing_from_daemon
 from labkit.watchdog import stop_group
 
 WATCHDOG = str(Path(__file__).with_name('watchdog.py'))
@@ -158,6 +159,7 @@ class Background:
             present = observer.node_names(include_hidden=True)
             missing = [name for name in wanted if name not in present]
             if not missing:
+                self._wait_for_the_daemon(wanted, deadline - time.monotonic())
                 return [name for name in present if not is_hidden(name)]
             if self.poll() is not None:
                 self.stop()
@@ -172,6 +174,19 @@ class Background:
                     f'`{self.command}`.\nNodes in the graph: '
                     f'{", ".join(visible) if visible else "none"}.'))
             time.sleep(0.1)
+
+    def _wait_for_the_daemon(self, nodes: list[str], timeout: float) -> None:
+        """On a ROS 2 with a daemon, wait until `ros2` commands see what the observer
+        saw: the nodes and the topics they use (ros2_command explains why)."""
+        topics = [topic for topic, (_types, publishers, subscribers)
+                  in observer.topic_endpoints(observer.observer().node).items()
+                  if set(nodes) & (publishers | subscribers)]
+        missing = missing_from_daemon(find_ros2(), nodes, topics, timeout=max(timeout, 10.0))
+        if missing:
+            self.stop()
+            raise NodesNotFoundError(self._explain(
+                f'The ros2 daemon still does not list {", ".join(missing)} from '
+                f'`{self.command}`, which the graph has; `ros2 daemon stop` and try again.'))
 
     def _explain(self, message: str, tail: int = 20) -> str:
         output = self.output(last=tail)

@@ -8,30 +8,11 @@ from __future__ import annotations
 
 import os
 import shlex
-import shutil
-import sys
 from collections.abc import Mapping, Sequence
-from pathlib import Path
 from typing import Any
 
 from labkit.background import Background
-
-
-def find_ros2(env: Mapping[str, str] | None = None) -> str:
-    """The `ros2` a terminal with this environment would run.
-
-    Falls back to the one next to this Python (a project venv that is not on
-    PATH, e.g. in a notebook kernel started directly from .venv).
-    """
-    path = (env if env is not None else os.environ).get('PATH', os.defpath)
-    found = shutil.which('ros2', path=path)
-    if found:
-        return found
-    beside = Path(sys.executable).parent / 'ros2'
-    if beside.exists():
-        return str(beside)
-    raise FileNotFoundError('no `ros2` command found on PATH nor next to '
-                            f'{sys.executable}; is ROS 2 (or the project venv) set up?')
+from labkit.ros2_command import find_ros2
 
 
 def format_argument(value: Any) -> str:

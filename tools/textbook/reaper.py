@@ -43,21 +43,32 @@ def describe(proc: psutil.Process) -> str:
         return f'pid {proc.pid}'
 
 
+def is_ros2_daemon(proc: psutil.Process) -> bool:
+    """The ROS 2 daemon (`ros2 daemon`, `--name ros2-daemon`) that Jazzy's `ros2`
+    starts and leaves running on purpose, as on a student's machine."""
+    try:
+        return '--name' in (cmdline := proc.cmdline()) and 'ros2-daemon' in cmdline
+    except psutil.Error:
+        return False
+
+
 def reap(tokens: Iterable[str], grace: float = 5.0) -> list[str]:
     """Stop every process of ``tokens`` still alive; returns what had to be killed.
 
     Waits ``grace`` seconds first, so processes that are already shutting
     down (e.g. killed by a watchdog when their kernel died) are not counted.
+    A ROS 2 daemon is stopped too but not returned: `ros2` started it for the
+    run's domain and keeps it by design.
     """
     tokens = list(tokens)
     deadline = time.monotonic() + grace
     left = find_processes(tokens)
-    while left and time.monotonic() < deadline:
+    while any(not is_ros2_daemon(p) for p in left) and time.monotonic() < deadline:
         time.sleep(0.2)
         left = find_processes(tokens)
     if not left:
         return []
-    names = [describe(p) for p in left]
+    names = [describe(p) for p in left if not is_ros2_daemon(p)]
     for proc in left:
         try:
             proc.terminate()

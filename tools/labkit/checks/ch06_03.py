@@ -12,7 +12,6 @@ import subprocess
 from dataclasses import dataclass
 from typing import Any
 
-from labkit.commands import find_ros2
 from labkit.errors import LabkitError
 from labkit.grading import requirements
 from labkit.grading.exercise import Exercise
@@ -20,6 +19,7 @@ from labkit.grading.launch_probe import LaunchProbe, probe
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 from labkit.graph import GraphSnapshot, read_parameters
+from labkit.ros2_command import find_ros2
 
 ROVER_FILE = 'ex63_rover.launch.py'
 SCOPED_FILE = 'ex63_bringup_scoped.launch.py'
