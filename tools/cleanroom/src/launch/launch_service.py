@@ -168,9 +168,9 @@ class LaunchService:
 
     async def __process_event(self, event: Event) -> None:
         context = self.__context
-        if isinstance(event, Shutdown):
-            if self.__shutdown_handled:
-                return
+        if isinstance(event, Shutdown) and not self.__shutdown_handled:
+            # A later Shutdown reaches the handlers too, as in Jazzy: OnShutdown
+            # handlers run again (processes are not signalled twice).
             self.__shutdown_handled = True
             context._set_is_shutdown(True)
         for handler in list(context._event_handlers):

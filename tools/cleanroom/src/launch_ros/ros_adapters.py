@@ -1,7 +1,8 @@
 """An rclpy node inside the launch process, spun on a background thread.
 
 Only lifecycle support needs it (service clients and the transition_event
-subscription), so it is created on first use and shut down with the launch.
+subscription), so it is created on first use and shut down at the launch's
+Shutdown event.
 It has its own rclpy Context and installs no signal handlers: SIGINT
 belongs to the LaunchService.
 """
@@ -14,8 +15,7 @@ import weakref
 from typing import Any
 
 from launch import LaunchContext
-
-from ._support.launch_cleanup import add_shutdown_callback
+from launch.event_handlers import OnShutdown
 
 
 class ROSAdapter:
@@ -88,11 +88,19 @@ class ROSAdapter:
         thread.start()
         return thread
 
+    @property
+    def running(self) -> bool:
+        return self.__thread is not None and not self.__stop.is_set()
+
     def shutdown(self) -> None:
-        """Stop workers and the spin thread, destroy the node, shut the context down."""
-        if self.__thread is None or self.__stop.is_set():
-            self.__stop.set()
-            return
+        """Stop workers and the spin thread, destroy the node, shut the context down.
+
+        As Jazzy's, it runs at every Shutdown event of the launch, and a second
+        one (two `EmitEvent(Shutdown())`, e.g. two critical processes exiting)
+        raises, which the launch logs as "Caught exception in launch" and exits 1.
+        """
+        if not self.running:
+            raise RuntimeError('Cannot shutdown a ROS adapter that is not running')
         self.__stop.set()
         for worker in self.__workers:
             worker.join(timeout=5.0)
@@ -113,7 +121,8 @@ def get_ros_adapter(context: LaunchContext) -> ROSAdapter:
         if adapter is None:
             adapter = ROSAdapter()
             _adapters[context] = adapter
-            add_shutdown_callback(context, adapter.shutdown)
+            context.register_event_handler(OnShutdown(
+                on_shutdown=lambda _event, _context: adapter.shutdown()))
     return adapter
 
 
@@ -124,7 +133,8 @@ def get_ros_node(context: LaunchContext) -> Any:
 def _shutdown_all() -> None:
     """Safety net for launches that ended without a Shutdown event."""
     for adapter in list(_adapters.values()):
-        adapter.shutdown()
+        if adapter.running:
+            adapter.shutdown()
 
 
 atexit.register(_shutdown_all)

@@ -19,7 +19,7 @@ from launch.event_handlers import (
     OnProcessStart,
     OnShutdown,
 )
-from launch.events import matches_action
+from launch.events import Shutdown, matches_action
 from launch.events.process import ProcessStdin, ShutdownProcess, SignalProcess
 from launch.substitutions import LocalSubstitution
 
@@ -164,4 +164,24 @@ def test_opaque_coroutine_is_awaited_and_cancelled_on_shutdown(run_launch):
     result = run_launch([OpaqueCoroutine(coroutine=forever, ignore_context=True)],
                         shutdown_after=0.1)
     assert cancelled == [True]
+    assert result.returncode == 0
+
+
+def test_every_shutdown_event_reaches_on_shutdown_handlers(run_launch):
+    """Observed on Jazzy: a second Shutdown event (a second critical process
+    exiting) runs the OnShutdown handlers again, and a process that is already
+    stopping is not signalled again."""
+    first = ExecuteProcess(cmd=['true'], name='first')
+    second = ExecuteProcess(cmd=['sleep', '30'], name='second')
+    result = run_launch([
+        first, second,
+        RegisterEventHandler(OnShutdown(
+            on_shutdown=lambda event, _context: [LogInfo(msg=f'on shutdown: {event.reason}')])),
+        RegisterEventHandler(OnProcessExit(
+            target_action=first, on_exit=[EmitEvent(event=Shutdown(reason='first'))])),
+        RegisterEventHandler(OnProcessExit(
+            target_action=second, on_exit=[EmitEvent(event=Shutdown(reason='second'))])),
+    ])
+    assert result.user_lines() == ['on shutdown: first', 'on shutdown: second']
+    assert result.output.count("sending signal 'SIGINT' to process[second-2]") == 1
     assert result.returncode == 0

@@ -121,3 +121,30 @@ def test_change_state_rejects_unknown_transition():
 def test_lifecycle_node_requires_name_and_namespace():
     with pytest.raises(TypeError):
         LifecycleNode(package=PKG, executable='lifecycle_talker', name='x')
+
+
+def test_a_second_shutdown_with_the_ros_adapter_running_is_an_error(test_package, run_launch):
+    """Observed on Jazzy (lesson 7.2, two critical processes exiting): with a
+    LifecycleNode the launch process runs a ROS adapter, every Shutdown event
+    shuts it down, and the second one ends the launch with exit code 1:
+    `[ERROR] [launch]: Caught exception in launch (see debug for traceback):
+    Cannot shutdown a ROS adapter that is not running`."""
+    node = LifecycleNode(package=PKG, executable='lifecycle_talker', name='lc_twice',
+                         namespace='lr')
+
+    def shut_down_twice(_context):
+        return [EmitEvent(event=Shutdown(reason='first')),
+                EmitEvent(event=Shutdown(reason='second'))]
+
+    result = run_launch([
+        node,
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=node, goal_state='inactive',
+            entities=[OpaqueFunction(function=shut_down_twice)])),
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                    transition_id=T.TRANSITION_CONFIGURE)),
+        TimerAction(period=60.0, actions=[EmitEvent(event=Shutdown(reason='timeout'))]),
+    ])
+    assert ('[ERROR] [launch]: Caught exception in launch (see debug for traceback): '
+            'Cannot shutdown a ROS adapter that is not running') in result.output
+    assert result.returncode == 1
