@@ -14,7 +14,7 @@
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-venv="$root/.venv"
+venv="${TEXTBOOK_VENV:-$root/.venv}"   # the parity command makes build/jazzy/venv
 python="${PYTHON:-python3}"
 
 real_ros_present() {
@@ -67,7 +67,7 @@ if [ -f "$venv/.setup-stamp" ] && [ "$(cat "$venv/.setup-stamp")" = "$stamp" ]; 
   exit 0
 fi
 
-echo "setup: creating the project environment in .venv (system ROS: $USE_SYSTEM_ROS)" >&2
+echo "setup: creating the project environment in $venv (system ROS: $USE_SYSTEM_ROS)" >&2
 reqs="$(mktemp)"
 trap 'rm -f "$reqs"' EXIT
 if [ "$USE_SYSTEM_ROS" = 1 ]; then

@@ -4,7 +4,8 @@
 - serve: the same, served on http://127.0.0.1:8000, rebuilt on changes;
 - test:  the whole test suite (pytest on test_workers workers), pytest's exit code;
 - check: only the lesson checks (metadata, includes, inline code), no kernel;
-- lab:   JupyterLab on lessons/ with the book's kernel (textbook.lab).
+- lab:   JupyterLab on lessons/ with the book's kernel (textbook.lab);
+- parity: every lesson on the clean room and on a real Jazzy, compared (textbook.parity).
 """
 from __future__ import annotations
 
@@ -72,6 +73,12 @@ def lab(options: argparse.Namespace) -> int:
                                               folder=write_settings()))
 
 
+def parity(options: argparse.Namespace) -> int:
+    from . import parity as parity_command
+
+    return parity_command.main(options.pytest_args)
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog='python -m textbook', description=__doc__)
     commands = parser.add_subparsers(dest='command', required=True)
@@ -90,9 +97,13 @@ def main(argv: list[str] | None = None) -> int:
     labbing.add_argument('--address', default='127.0.0.1:8888')
     labbing.add_argument('--no-browser', action='store_true', help='do not open a browser')
     labbing.set_defaults(run=lab)
+    parity_command = commands.add_parser(
+        'parity', help='execute the lessons on both stacks and compare their outputs',
+        add_help=False)
+    parity_command.set_defaults(run=parity)
     # Unknown arguments of `test` go to pytest, e.g. `python -m textbook test -k lessons`.
     options, extra = parser.parse_known_args(argv)
-    if extra and options.command != 'test':
+    if extra and options.command not in ('test', 'parity'):
         parser.error(f"unrecognized arguments: {' '.join(extra)}")
     options.pytest_args = extra
     return options.run(options)

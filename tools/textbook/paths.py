@@ -11,7 +11,10 @@ ROOT = Path(__file__).resolve().parents[2]
 SNIPPETS = ROOT / 'snippets'
 LESSONS = ROOT / 'lessons'
 DOCS = ROOT / 'docs'
-BUILD = ROOT / 'build'
+# TEXTBOOK_BUILD moves every build product (workspace, caches, executed
+# notebooks): the parity command runs a second stack beside the first in
+# build/jazzy without touching build/.
+BUILD = Path(os.environ.get('TEXTBOOK_BUILD') or ROOT / 'build').resolve()
 WORKSPACE = BUILD / 'ws'
 NOTEBOOKS = BUILD / 'notebooks'
 CACHE = BUILD / 'cache'

@@ -1,0 +1,284 @@
+"""`python -m textbook parity`: every lesson on both stacks, compared cell by cell.
+
+The book promises that each output on a page is what a student sees on a real
+ROS 2 Jazzy.  The site is built on the headless stack (the clean room); this
+command executes the lessons a second time with a real Jazzy sourced (by
+default the run-only reference in ../shared/jazzy-reference, installed into
+build/jazzy-reference) in an environment of its own (build/jazzy/venv, its
+products in build/jazzy), and compares the code cells' outputs after
+normalising only what varies from run to run (see `normalise`).
+
+Both sides use the lesson cache, so a lesson whose code cells, snippets and
+tools did not change is not executed again.  The report goes to
+build/parity/report.json and a table to stdout; the exit code is 1 when a
+lesson failed on either stack or a cell differs outside the allow-list
+(tools/textbook/parity_allowed.yaml, each entry with its reason).
+"""
+from __future__ import annotations
+
+import argparse
+import difflib
+import json
+import os
+import re
+import subprocess
+import sys
+from collections.abc import Iterable, Sequence
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import nbformat
+import yaml
+
+from . import paths
+
+JAZZY_BUILD = paths.ROOT / 'build' / 'jazzy'
+JAZZY_VENV = JAZZY_BUILD / 'venv'
+REFERENCE_INSTALLER = paths.ROOT.parent / 'shared' / 'jazzy-reference' / 'install.sh'
+REFERENCE_PREFIX = paths.ROOT / 'build' / 'jazzy-reference'
+REPORT = paths.ROOT / 'build' / 'parity' / 'report.json'
+ALLOWED = Path(__file__).with_name('parity_allowed.yaml')
+
+
+# -- normalising ----------------------------------------------------------------
+#: (pattern, replacement): what differs between two runs of the same lesson on
+#: one machine, whatever the stack.  Nothing else is touched.
+_VARYING = [
+    (re.compile(r'\bpid \[?\d+\]?'), 'pid [PID]'),
+    (re.compile(r'0x[0-9a-f]{6,}'), '0x…'),
+    (re.compile(r'\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d-\d+-[\w.-]+?-\d+'), 'LOG-DIR'),
+    (re.compile(r'\[\d{9,}\.\d+\]'), '[TIME]'),
+    (re.compile(r'launch_params_\w+'), 'launch_params_…'),
+    (re.compile(r'ROS_DOMAIN_ID=\d+'), 'ROS_DOMAIN_ID=…'),
+    (re.compile(re.escape(str(paths.RUNS)) + r'/[\w.-]+'), '~/ros2_ws'),
+]
+_STARTED = re.compile(r'^\[INFO\] \[[\w.-]+\]: process started with pid')
+
+
+def normalise(text: str, builds: Iterable[Path] = ()) -> list[str]:
+    """The lines of `text` with run-to-run variation replaced by placeholders.
+
+    `builds` are build folders that stand for each other (build/jazzy and
+    build).  Runs of "process started" lines are sorted: launch starts the
+    processes of one description at once and does not define their order.
+    """
+    for build in builds:
+        text = text.replace(str(build), str(paths.ROOT / 'build'))
+    for pattern, replacement in _VARYING:
+        text = pattern.sub(replacement, text)
+    lines = text.splitlines()
+    out: list[str] = []
+    run: list[str] = []
+    for line in [*lines, None]:
+        if line is not None and _STARTED.match(line):
+            run.append(line)
+            continue
+        out += sorted(run)
+        run = []
+        if line is not None:
+            out.append(line)
+    return out
+
+
+def cell_text(cell: nbformat.NotebookNode) -> str:
+    """What a reader sees of a code cell's outputs, as text."""
+    parts = []
+    for output in cell.get('outputs', []):
+        if output.output_type == 'stream':
+            parts.append(output.text)
+        elif output.output_type in ('execute_result', 'display_data'):
+            parts.append(output.get('data', {}).get('text/plain', ''))
+        elif output.output_type == 'error':
+            parts.append(f'{output.ename}: {output.evalue}')
+    return '\n'.join(part.rstrip('\n') for part in parts)
+
+
+# -- comparing -------------------------------------------------------------------
+@dataclass
+class CellDifference:
+    cell: int
+    source: str
+    diff: list[str]
+    allowed: str | None = None
+
+
+@dataclass
+class LessonParity:
+    lesson: str
+    source: str
+    cells: int = 0
+    errors: dict[str, str] = field(default_factory=dict)  # stack -> why it did not execute
+    differences: list[CellDifference] = field(default_factory=list)
+
+    @property
+    def differing(self) -> list[CellDifference]:
+        return [d for d in self.differences if d.allowed is None]
+
+    @property
+    def held(self) -> bool:
+        return not self.errors and not self.differing
+
+
+def load_allowed(path: Path = ALLOWED) -> list[dict]:
+    entries = yaml.safe_load(path.read_text()) if path.exists() else None
+    for entry in entries or []:
+        if not {'lesson', 'cell_contains', 'reason'} <= set(entry):
+            raise ValueError(f'{paths.rel(path)}: every entry needs lesson, cell_contains and '
+                             f'reason: {entry}')
+    return entries or []
+
+
+def compare(lesson_id: str, source: str, cleanroom: nbformat.NotebookNode,
+            jazzy: nbformat.NotebookNode, allowed: Sequence[dict] = ()) -> LessonParity:
+    """Cell by cell: the normalised outputs of the same code cell on both stacks."""
+    result = LessonParity(lesson_id, source)
+    ours = [c for c in cleanroom.cells if c.cell_type == 'code']
+    theirs = [c for c in jazzy.cells if c.cell_type == 'code']
+    result.cells = len(ours)
+    builds = [JAZZY_BUILD]
+    for index, (a, b) in enumerate(zip(ours, theirs, strict=True)):
+        left, right = normalise(cell_text(a), builds), normalise(cell_text(b), builds)
+        if left == right:
+            continue
+        diff = list(difflib.unified_diff(left, right, 'clean room', 'Jazzy', lineterm='', n=1))
+        reason = next((entry['reason'] for entry in allowed
+                       if entry['lesson'] == lesson_id and entry['cell_contains'] in a.source),
+                      None)
+        result.differences.append(CellDifference(index, a.source, diff, reason))
+    return result
+
+
+# -- executing -------------------------------------------------------------------
+def execute_here(sources: Sequence[str]) -> dict[str, dict]:
+    """Execute (or fetch from the cache) each lesson with this environment's stack;
+    source -> {'notebook': path} or {'error': text}.  Runs in the stack's venv."""
+    from .execute import LessonExecutionError, publish
+    from .lessons import load
+
+    results: dict[str, dict] = {}
+    for source in sources:
+        try:
+            results[source] = {'notebook': str(publish(load(paths.ROOT / source)))}
+        except LessonExecutionError as error:
+            results[source] = {'error': str(error)}
+    return results
+
+
+def reference_setup(explicit: str | None) -> Path:
+    """The setup.bash of the real Jazzy: given, or the shared reference installed."""
+    if explicit:
+        return Path(explicit).resolve()
+    if not REFERENCE_INSTALLER.exists():
+        raise SystemExit('parity: no real ROS 2 Jazzy: pass --jazzy /opt/ros/jazzy/setup.bash '
+                         f'(or put the reference at {REFERENCE_INSTALLER.parent})')
+    done = subprocess.run(['bash', str(REFERENCE_INSTALLER), str(REFERENCE_PREFIX)],
+                          capture_output=True, text=True, check=False)
+    if done.returncode != 0:
+        raise SystemExit(f'parity: installing the Jazzy reference failed:\n{done.stderr}')
+    return Path(done.stdout.strip().splitlines()[-1])
+
+
+def jazzy_environment(setup: Path) -> dict[str, str]:
+    """os.environ as after `source SETUP`, with the build products in build/jazzy,
+    and build/jazzy/venv made (or refreshed) by tools/setup_env.sh."""
+    clean = {k: v for k, v in os.environ.items() if k != 'VIRTUAL_ENV'}
+    clean['PATH'] = os.pathsep.join(p for p in clean.get('PATH', '').split(os.pathsep)
+                                    if Path(p) != paths.VENV_BIN)
+    script = f'source {str(setup)!r} >/dev/null && env -0'
+    dumped = subprocess.run(['bash', '-c', script], env=clean, capture_output=True,
+                            check=True).stdout.decode()
+    env = dict(item.split('=', 1) for item in dumped.split('\0') if '=' in item)
+    env.update(TEXTBOOK_BUILD=str(JAZZY_BUILD), TEXTBOOK_VENV=str(JAZZY_VENV))
+    subprocess.run(['bash', str(paths.TOOLS / 'setup_env.sh')], env=env, check=True)
+    return env
+
+
+def _run_side(python: str, env: dict[str, str] | None, sources: Sequence[str]
+              ) -> subprocess.Popen:
+    return subprocess.Popen([python, '-m', 'textbook.parity', '--execute-here', *sources],
+                            cwd=paths.ROOT, env=env, stdout=subprocess.PIPE, text=True)
+
+
+def _collect(process: subprocess.Popen, stack: str) -> dict[str, dict]:
+    out, _ = process.communicate()
+    if process.returncode != 0:
+        raise SystemExit(f'parity: executing the lessons on {stack} failed '
+                         f'(exit {process.returncode})')
+    return json.loads(out.strip().splitlines()[-1])
+
+
+# -- the command -------------------------------------------------------------------
+def run(lesson_paths: Sequence[str], jazzy_setup: str | None) -> list[LessonParity]:
+    from .lessons import load_all
+
+    lessons = load_all()
+    if lesson_paths:
+        wanted = {Path(p).resolve() for p in lesson_paths}
+        lessons = [lesson for lesson in lessons if lesson.path.resolve() in wanted]
+    sources = [lesson.source for lesson in lessons]
+    env = jazzy_environment(reference_setup(jazzy_setup))
+    # Both stacks at once, one lesson each: the two cores the build's `jobs` uses.
+    jazzy = _run_side(str(JAZZY_VENV / 'bin' / 'python'), env, sources)
+    ours = _run_side(sys.executable, None, sources)
+    results = {'clean room': _collect(ours, 'the clean room'), 'Jazzy': _collect(jazzy, 'Jazzy')}
+    allowed = load_allowed()
+    report = []
+    for lesson in lessons:
+        sides = {stack: results[stack][lesson.source] for stack in results}
+        errors = {stack: side['error'] for stack, side in sides.items() if 'error' in side}
+        if errors:
+            parity = LessonParity(lesson.meta['id'], lesson.source, errors=errors)
+        else:
+            notebooks = [nbformat.read(sides[stack]['notebook'], as_version=4)
+                         for stack in ('clean room', 'Jazzy')]
+            parity = compare(lesson.meta['id'], lesson.source, *notebooks, allowed=allowed)
+        report.append(parity)
+    return report
+
+
+def table(report: Sequence[LessonParity]) -> str:
+    rows = [f'{"lesson":<34} {"cells":>5} {"differ":>6} {"allowed":>7}  parity']
+    for parity in report:
+        if parity.errors:
+            verdict = '✗ did not run on ' + ' and '.join(parity.errors)
+        else:
+            verdict = '✓ held' if parity.held else '✗ differs'
+        allowed = len(parity.differences) - len(parity.differing)
+        rows.append(f'{parity.lesson:<34} {parity.cells:>5} {len(parity.differing):>6} '
+                    f'{allowed:>7}  {verdict}')
+    return '\n'.join(rows)
+
+
+def details(report: Sequence[LessonParity], most: int = 40) -> str:
+    lines = []
+    for parity in report:
+        for stack, error in parity.errors.items():
+            lines += [f'--- {parity.source}: did not run on {stack}', error]
+        for difference in parity.differing:
+            first = difference.source.strip().splitlines()[0] if difference.source.strip() else ''
+            lines += [f'--- {parity.source}, code cell {difference.cell + 1}: {first}',
+                      *difference.diff[:most]]
+    return '\n'.join(lines)
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog='python -m textbook parity', description=__doc__,
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument('lessons', nargs='*', help='lesson files (default: every lesson)')
+    parser.add_argument('--jazzy', metavar='SETUP_BASH',
+                        help='setup.bash of a real ROS 2 Jazzy (default: the shared reference)')
+    parser.add_argument('--execute-here', action='store_true', help=argparse.SUPPRESS)
+    options = parser.parse_args(argv)
+    if options.execute_here:
+        print(json.dumps(execute_here(options.lessons)))
+        return 0
+    report = run(options.lessons, options.jazzy)
+    REPORT.parent.mkdir(parents=True, exist_ok=True)
+    REPORT.write_text(json.dumps([{**asdict(p), 'held': p.held} for p in report], indent=1))
+    print(details(report))
+    print(table(report))
+    return 0 if all(parity.held for parity in report) else 1
+
+
+if __name__ == '__main__':
+    sys.exit(main())
