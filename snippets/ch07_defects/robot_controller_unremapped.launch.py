@@ -22,6 +22,14 @@ from lifecycle_msgs.msg import Transition
 CONFIG = PathJoinSubstitution([FindPackageShare('capstone_bringup'), 'config'])
 
 
+
+def unless_stopping(*entities):
+    """An on_exit that does nothing once the launch is stopping: the process then
+    exited because of that, and a second Shutdown is an error on Jazzy when the
+    launch runs a ROS adapter (a LifecycleNode): 'Cannot shutdown a ROS adapter
+    that is not running'."""
+    return lambda _event, context: None if context.is_shutdown else list(entities)
+
 def robot_system(context: LaunchContext) -> list:
     """The robot's nodes and event handlers, for the robot the arguments name."""
     robot = LaunchConfiguration('robot').perform(context)
@@ -47,8 +55,9 @@ def robot_system(context: LaunchContext) -> list:
         # Critical: without the safety monitor nothing stops the robot at a wall.
         RegisterEventHandler(OnProcessExit(
             target_action=safety_monitor,
-            on_exit=[LogInfo(msg=f'The safety monitor of {robot} exited: shutting down'),
-                     EmitEvent(event=Shutdown(reason=f'the safety monitor of {robot} exited'))],
+            on_exit=unless_stopping(
+                LogInfo(msg=f'The safety monitor of {robot} exited: shutting down'),
+                EmitEvent(event=Shutdown(reason=f'the safety monitor of {robot} exited'))),
         )),
         recorder,
         # Lifecycle: configure now; activate once configuring has succeeded.

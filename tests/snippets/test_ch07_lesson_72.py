@@ -170,13 +170,19 @@ def test_draft_meets_the_spec_and_shuts_down_when_turtlesim_crashes(ros_env):
         done = _live(SPEC, ros_env)
         started = draft.wait_for_output(r'\[turtlesim_node-\d+\]: process started with pid')
         os.kill(int(re.search(r'pid \[(\d+)\]', started).group(1)), signal.SIGKILL)
-        draft.wait_for_output(r'The safety monitor of turtle2 exited', timeout=HANG_GUARD)
-        draft.stop()
+        exit_code = draft.wait(timeout=HANG_GUARD)
     _assert_meets(SPEC, done)
     shutdowns = [line for line in draft.lines if 'shutting down' in line]
     assert any('turtlesim exited: no world left' in line for line in shutdowns), shutdowns
     assert any('[capstone] turtlesim exited -> shutting down' in line for line in shutdowns), \
         shutdowns
+    # The draft's second handler is a second Shutdown event: as on Jazzy, the launch's
+    # ROS adapter (robot.launch.py's LifecycleNode) is shut down twice, and that fails.
+    assert ('[ERROR] [launch]: Caught exception in launch (see debug for traceback): '
+            'Cannot shutdown a ROS adapter that is not running') in draft.lines, draft.output()
+    assert exit_code == 1, draft.output()
+    assert not [line for line in draft.lines if 'The safety monitor of' in line], \
+        'a monitor stopped by the shutdown was reported as its cause'
 
 
 def _route(robot: str) -> list[float]:
@@ -228,8 +234,7 @@ def test_sim_false_the_draft_meets_the_spec_and_stops_without_turtlesim(ros_env)
         done = _live(SPEC, ros_env)
         world.stop()
         draft.wait_for_output(r'/turtlesim is not running -> shutting down', timeout=HANG_GUARD)
-        draft.wait_for_output(r'The safety monitor of turtle2 exited', timeout=HANG_GUARD)
-        draft.stop()
+        draft.wait(timeout=HANG_GUARD)
     _assert_meets(SPEC, done)
     assert not [line for line in draft.lines if 'turtlesim_node' in line], draft.output()
 
@@ -252,7 +257,9 @@ def test_sim_false_the_books_file_shuts_down_without_turtlesim(ros_env):
     assert exit_code == 0, output  # a shutdown asked for is a normal end
     assert '[sim_watchdog]: /turtlesim has left the ROS graph: no world left' in output, output
     assert 'The simulator watchdog exited: no world left, shutting down' in output, output
+    assert output.count('Capstone shutting down') == 1, output  # one Shutdown event
     assert 'Capstone shutting down: the simulator is gone' in output, output
+    assert 'The safety monitor of' not in output, output  # stopped by the shutdown, not its cause
     died = [line for line in output.splitlines() if 'process has died' in line]
     assert len(died) == 1 and '[sim_watchdog-' in died[0] and 'exit code 1' in died[0], output
     ended = [m.group(1) for line in output.splitlines() if (m := ENDED.match(line))]

@@ -130,3 +130,19 @@ def test_stop_also_ends_children_that_outlive_the_command(ros_env, tmp_path):
     assert len(members) == 2
     assert background.stop(sigint_grace=5, sigterm_grace=5) == -2  # Ctrl-C ended the command
     assert still_running(members) == []
+
+
+def test_wait_returns_the_exit_code_of_a_command_that_ends_by_itself(ros_env):
+    background = labkit.start(['python3', '-c', 'import sys; print("bye"); sys.exit(3)'],
+                              env=ros_env)
+    assert background.wait(timeout=60) == 3
+    assert background.output() == 'bye'
+
+
+def test_wait_stops_a_command_that_does_not_end_and_says_so(ros_env):
+    background = labkit.start(['python3', '-c', 'import time; print("up", flush=True); '
+                                               'time.sleep(600)'], env=ros_env)
+    background.wait_for_output('up')
+    with pytest.raises(labkit.LabkitError, match=r'still running after 0.5 s'):
+        background.wait(timeout=0.5)
+    assert not background.running

@@ -144,6 +144,18 @@ class Background:
     def returncode(self) -> int | None:
         return self.poll()
 
+    def wait(self, timeout: float = 60.0) -> int:
+        """Wait until the command ends by itself (a launch that shut itself down);
+        return its exit code.  If it is still running after `timeout` seconds, it is
+        stopped and the error says so, with the end of its output."""
+        try:
+            self._process.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            self.stop()
+            raise LabkitError(self._explain(
+                f'`{self.command}` was still running after {timeout:g} s.')) from None
+        return self.stop()
+
     # -- waiting for nodes ----------------------------------------------
     def wait_for_nodes(self, names: Iterable[str], timeout: float = 20.0) -> list[str]:
         """Wait until every node in `names` is in the ROS graph; return all nodes seen.

@@ -29,6 +29,14 @@ from launch_ros.substitutions import FindPackageShare
 MAX_ROBOTS = 4  # config/turtle1.yaml ... turtle4.yaml
 
 
+
+def unless_stopping(*entities):
+    """An on_exit that does nothing once the launch is stopping: the process then
+    exited because of that, and a second Shutdown is an error on Jazzy when the
+    launch runs a ROS adapter (a LifecycleNode): 'Cannot shutdown a ROS adapter
+    that is not running'."""
+    return lambda _event, context: None if context.is_shutdown else list(entities)
+
 def launch_file(name: str) -> PythonLaunchDescriptionSource:
     return PythonLaunchDescriptionSource(
         PathJoinSubstitution([FindPackageShare('capstone_bringup'), 'launch', name]))
@@ -64,8 +72,9 @@ def generate_launch_description():
         sim_watchdog,
         RegisterEventHandler(OnProcessExit(
             target_action=sim_watchdog,
-            on_exit=[LogInfo(msg='The simulator watchdog exited: no world left, shutting down'),
-                     EmitEvent(event=Shutdown(reason='the simulator is gone'))],
+            on_exit=unless_stopping(
+                LogInfo(msg='The simulator watchdog exited: no world left, shutting down'),
+                EmitEvent(event=Shutdown(reason='the simulator is gone'))),
         )),
         RegisterEventHandler(OnShutdown(
             on_shutdown=lambda event, context: LogInfo(

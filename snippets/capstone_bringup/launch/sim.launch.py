@@ -20,6 +20,14 @@ from launch_ros.substitutions import FindPackageShare
 MAX_ROBOTS = 4  # config/turtle1.yaml ... turtle4.yaml
 
 
+
+def unless_stopping(*entities):
+    """An on_exit that does nothing once the launch is stopping: the process then
+    exited because of that, and a second Shutdown is an error on Jazzy when the
+    launch runs a ROS adapter (a LifecycleNode): 'Cannot shutdown a ROS adapter
+    that is not running'."""
+    return lambda _event, context: None if context.is_shutdown else list(entities)
+
 def robot_count(context: LaunchContext) -> int:
     """The argument robot_count as a number, or an error that says what is allowed."""
     text = LaunchConfiguration('robot_count').perform(context)
@@ -50,7 +58,8 @@ def generate_launch_description():
         turtlesim,
         RegisterEventHandler(OnProcessExit(
             target_action=turtlesim,
-            on_exit=[LogInfo(msg='turtlesim exited: no world left, shutting down'),
-                     EmitEvent(event=Shutdown(reason='turtlesim exited'))],
+            on_exit=unless_stopping(
+                LogInfo(msg='turtlesim exited: no world left, shutting down'),
+                EmitEvent(event=Shutdown(reason='turtlesim exited'))),
         )),
     ])
