@@ -72,7 +72,10 @@ reqs="$(mktemp)"
 trap 'rm -f "$reqs"' EXIT
 if [ "$USE_SYSTEM_ROS" = 1 ]; then
   "$python" -m venv --system-site-packages "$venv"
-  grep -v -E '^(ros-|cmake$)' "$root/requirements/base.in" > "$reqs"
+  # ROS 2, CMake and colcon come from the system, as a ROS user has them: the
+  # system colcon runs `colcon test` with the system's pytest (Jazzy's
+  # launch_testing plugin is refused by the newer pytest of this venv).
+  grep -v -E '^(ros-|cmake$|colcon-)' "$root/requirements/base.in" > "$reqs"
 else
   "$python" -m venv "$venv"
   cp "$root/requirements/base.in" "$reqs"
