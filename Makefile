@@ -2,7 +2,7 @@
 # both set up the project environment first (see tools/setup_env.sh).
 PY := .venv/bin/python
 
-.PHONY: setup serve site test lint lab lock clean
+.PHONY: setup serve site test check lint lab lock clean
 
 setup:
 	@bash tools/setup_env.sh
@@ -15,6 +15,13 @@ site: setup
 
 test: setup
 	$(PY) -m textbook test
+
+# The quick tier, for every change: lint, the lessons' static checks and the
+# unit tests (with the import contracts); `make test` runs every tier.
+check: setup
+	$(PY) -m ruff check .
+	$(PY) -m textbook check
+	$(PY) -m textbook test -m unit
 
 lint: setup
 	$(PY) -m ruff check .

@@ -10,6 +10,7 @@ tests/conftest.py.
 from __future__ import annotations
 
 import os
+from pathlib import Path
 
 import pytest
 
@@ -17,6 +18,15 @@ from . import reaper
 from .isolation import DomainLease, acquire_domain
 
 _lease: DomainLease | None = None
+
+#: Tier of every test below a folder (relative to the repository root).
+FOLDER_TIERS = {'tests/site': 'site', 'tests/lessons': 'lesson', 'tests/exercises': 'exercise',
+                'tests/snippets': 'ros', 'tests/conformance': 'ros',
+                'tools/cleanroom/tests': 'ros'}
+#: Fixtures that give a test ROS processes, a workspace or a launch: its tier is `ros`.
+ROS_FIXTURES = {'ros_env', 'ws_install', 'session_lease', 'run_launch', 'ros_domain',
+                'launch_test_session', 'cli_env', 'book_underlay', 'built_workspace'}
+TIERS = ('unit', 'ros', 'lesson', 'exercise', 'site')
 
 
 def _is_xdist_controller(config: pytest.Config) -> bool:
@@ -31,6 +41,22 @@ def pytest_configure(config: pytest.Config) -> None:
     _lease = acquire_domain()
     os.environ.update(_lease.env())
     os.environ.pop('ROS_LOCALHOST_ONLY', None)
+
+
+def tier_of(path: Path, fixtures: set[str]) -> str:
+    """The tier of a test: by its folder, else `ros` if it uses a ROS fixture, else `unit`."""
+    relative = path.resolve().relative_to(Path(__file__).resolve().parents[2]).as_posix()
+    for folder, tier in FOLDER_TIERS.items():
+        if relative.startswith(folder + '/'):
+            return tier
+    return 'ros' if fixtures & ROS_FIXTURES else 'unit'
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    """Give each test its tier marker, unless it states one itself."""
+    for item in items:
+        if not any(item.get_closest_marker(tier) for tier in TIERS):
+            item.add_marker(tier_of(item.path, set(getattr(item, 'fixturenames', ()))))
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
