@@ -5,7 +5,7 @@ in the same order, but only for entities whose visit has no effect outside
 the LaunchContext (launch descriptions, includes, groups, launch arguments
 and configurations).  Node actions are never visited: their constructor
 arguments (see node_capture) are evaluated in the context as it is at that
-point, together with the ROS state that PushRosNamespace, SetParameter,
+point, together with the ROS state that PushROSNamespace, SetParameter,
 SetParametersFromFile and SetRemap set before them.  That state is kept in
 the context's launch configurations, so it is scoped exactly like launch
 configurations are (a scoped GroupAction ends it).  Whatever only happens
@@ -228,7 +228,7 @@ class _Walker:
 
     def _apply_ros_state(self, action: Any, launch_file: str) -> None:
         state = self._state()
-        if isinstance(action, launch_ros.actions.PushRosNamespace):
+        if isinstance(action, launch_ros.actions.PushROSNamespace):
             pushed = self._text(action.namespace)
             state = replace(state, namespace=prefix_namespace(state.namespace or None, pushed)
                             if pushed else state.namespace)
@@ -367,7 +367,7 @@ class _Walker:
 
 
 _ROS_STATE_ACTIONS = tuple(getattr(launch_ros.actions, name) for name in (
-    'PushRosNamespace', 'SetParameter', 'SetParametersFromFile', 'SetRemap', 'SetUseSimTime')
+    'PushROSNamespace', 'SetParameter', 'SetParametersFromFile', 'SetRemap', 'SetUseSimTime')
     if hasattr(launch_ros.actions, name))
 
 #: Actions whose constructor arguments the walk needs (no public getter has them).

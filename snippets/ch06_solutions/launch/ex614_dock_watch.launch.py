@@ -9,7 +9,7 @@ every node in the namespace named by the argument robot.
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 from launch_ros.parameter_descriptions import ParameterValue
 
 
@@ -43,6 +43,6 @@ def generate_launch_description():
     ]
     # [START namespace]
     # R9: one namespace for the whole group, so a node added later cannot miss it
-    robot = GroupAction([PushRosNamespace(LaunchConfiguration('robot')), *nodes])
+    robot = GroupAction([PushROSNamespace(LaunchConfiguration('robot')), *nodes])
     # [END namespace]
     return LaunchDescription(arguments + [robot])

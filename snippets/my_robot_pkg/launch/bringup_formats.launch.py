@@ -11,7 +11,7 @@ from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.conditions import IfCondition
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def generate_launch_description():
@@ -32,7 +32,7 @@ def generate_launch_description():
 
     # [START robot]
     robot = GroupAction([
-        PushRosNamespace(robot_name),
+        PushROSNamespace(robot_name),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',
              parameters=[{'publish_rate': LaunchConfiguration('sensor_rate')}],
              remappings=[('distance', 'range')]),

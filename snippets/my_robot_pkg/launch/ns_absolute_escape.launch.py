@@ -8,14 +8,14 @@ the namespace is not put in front of it, so both robots share one topic.
 """
 from launch import LaunchDescription
 from launch.actions import GroupAction
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def robot(namespace: str) -> GroupAction:
     """One robot whose filter output is renamed, with a leading slash."""
     # [START robot]
     return GroupAction([
-        PushRosNamespace(namespace),
+        PushROSNamespace(namespace),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen'),
         Node(package='my_robot_pkg', executable='data_processor', output='screen',
              remappings=[('distance_filtered', '/obstacle_distance')]),

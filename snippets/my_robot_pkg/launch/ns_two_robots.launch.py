@@ -3,19 +3,19 @@ and once under /robot2.
 
     ros2 launch my_robot_pkg ns_two_robots.launch.py
 
-Each GroupAction starts with PushRosNamespace, which puts every node of the
+Each GroupAction starts with PushROSNamespace, which puts every node of the
 group (and none outside it) into that namespace.
 """
 from launch import LaunchDescription
 from launch.actions import GroupAction
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 # [START robot]
 def robot(namespace: str, robot_name: str) -> GroupAction:
     """One robot: sensor -> processor -> controller, all in `namespace`."""
     return GroupAction([
-        PushRosNamespace(namespace),
+        PushROSNamespace(namespace),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen'),
         Node(package='my_robot_pkg', executable='data_processor', output='screen'),
         Node(package='my_robot_pkg', executable='robot_controller', output='screen',

@@ -8,14 +8,14 @@ remapping nor the namespace applies to it.
 """
 from launch import LaunchDescription
 from launch.actions import GroupAction
-from launch_ros.actions import Node, PushRosNamespace, SetRemap
+from launch_ros.actions import Node, PushROSNamespace, SetRemap
 
 
 def generate_launch_description():
     return LaunchDescription([
         # [START group]
         GroupAction([
-            PushRosNamespace('robot1'),
+            PushROSNamespace('robot1'),
             SetRemap(src='distance', dst='ranges'),
             Node(package='my_robot_pkg', executable='sensor_publisher', output='screen'),
             Node(package='my_robot_pkg', executable='data_processor', output='screen'),

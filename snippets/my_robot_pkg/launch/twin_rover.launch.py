@@ -6,7 +6,7 @@
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def generate_launch_description():
@@ -17,7 +17,7 @@ def generate_launch_description():
         DeclareLaunchArgument('max_speed', default_value='1.2',
                               description='Top speed of the controller in m/s'),
         GroupAction([
-            PushRosNamespace(rover_name),
+            PushROSNamespace(rover_name),
             Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',
                  parameters=[{'publish_rate': 5.0}],
                  remappings=[('distance', 'scan_range')]),

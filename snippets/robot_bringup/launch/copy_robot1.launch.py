@@ -8,13 +8,13 @@ changed the copy.  Lesson 6.12 runs both and compares the robots.
 """
 from launch import LaunchDescription
 from launch.actions import GroupAction
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def generate_launch_description():
     # [START robot]
     return LaunchDescription([GroupAction([
-        PushRosNamespace('robot1'),
+        PushROSNamespace('robot1'),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',
              parameters=[{'publish_rate': 2.0}]),
         Node(package='my_robot_pkg', executable='data_processor', output='screen',

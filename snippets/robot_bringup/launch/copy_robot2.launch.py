@@ -5,13 +5,13 @@ was retuned, and never updated (lesson 6.12 shows what that costs).
 """
 from launch import LaunchDescription
 from launch.actions import GroupAction
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def generate_launch_description():
     # [START robot]
     return LaunchDescription([GroupAction([
-        PushRosNamespace('robot2'),
+        PushROSNamespace('robot2'),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',
              parameters=[{'publish_rate': 2.0}]),
         Node(package='my_robot_pkg', executable='data_processor', output='screen',

@@ -10,7 +10,7 @@ from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
-from launch_ros.actions import PushRosNamespace
+from launch_ros.actions import PushROSNamespace
 from launch_ros.substitutions import FindPackageShare
 
 
@@ -25,7 +25,7 @@ def generate_launch_description():
     robot_name = LaunchConfiguration('robot_name')
     # [START robot]
     robot = GroupAction([
-        PushRosNamespace(robot_name),
+        PushROSNamespace(robot_name),
         include('sensors', {'rate': LaunchConfiguration('sensor_rate')}),
         include('perception', {}),
         include('control', {'robot_name': robot_name}),  # rate: control's default 20.0?

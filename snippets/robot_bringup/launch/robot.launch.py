@@ -8,7 +8,7 @@ from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
-from launch_ros.actions import PushRosNamespace
+from launch_ros.actions import PushROSNamespace
 from launch_ros.substitutions import FindPackageShare
 
 
@@ -37,7 +37,7 @@ def generate_launch_description():
     robot_name = LaunchConfiguration('robot_name')
     # [START robot]
     robot = GroupAction([
-        PushRosNamespace(robot_name),
+        PushROSNamespace(robot_name),
         subsystem('sensors', {'rate': LaunchConfiguration('sensor_rate')}),
         subsystem('perception', {}),
         subsystem('control', {'robot_name': robot_name,

@@ -10,7 +10,7 @@ file and its arguments stay as they are.
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
-from launch_ros.actions import Node, PushRosNamespace, SetParameter
+from launch_ros.actions import Node, PushROSNamespace, SetParameter
 from launch_ros.parameter_descriptions import ParameterFile
 from launch_ros.substitutions import FindPackageShare
 
@@ -46,7 +46,7 @@ def generate_launch_description():
 
     # [START nodes]
     rover = GroupAction([
-        PushRosNamespace(robot),
+        PushROSNamespace(robot),
         # one global for every node of the group, without touching any file
         SetParameter(name='use_sim_time', value=LaunchConfiguration('use_sim_time')),
         Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',

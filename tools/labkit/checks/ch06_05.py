@@ -104,10 +104,10 @@ def _namespace_of(name: str) -> str:
 
 def _robots_running(verdict: Verdict, run: LaunchProbe) -> bool:
     nested = [node for node in run.nodes if node.startswith('/robot1/robot2/')]
-    hint = ('each robot is a GroupAction([PushRosNamespace(...), Node(...), ...]), so that '
+    hint = ('each robot is a GroupAction([PushROSNamespace(...), Node(...), ...]), so that '
             'the namespace ends with its group')
     if nested:
-        hint = (f'robot2 landed inside robot1 ({nested[0]}): a PushRosNamespace outside a '
+        hint = (f'robot2 landed inside robot1 ({nested[0]}): a PushROSNamespace outside a '
                 'GroupAction stays in force for everything after it; ' + hint)
     ok = True
     for namespace in ROBOT_NAMES:

@@ -1,11 +1,11 @@
-# Mistake: a PushRosNamespace of its own; robot.launch.py's required robot_name not passed.
+# Mistake: a PushROSNamespace of its own; robot.launch.py's required robot_name not passed.
 # Verdict names: pass 'robot_name'
 from launch import LaunchContext, LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction, IncludeLaunchDescription
 from launch.actions import OpaqueFunction
 from launch.launch_description_sources import PythonLaunchDescriptionSource
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
-from launch_ros.actions import PushRosNamespace
+from launch_ros.actions import PushROSNamespace
 from launch_ros.substitutions import FindPackageShare
 
 
@@ -14,7 +14,7 @@ def scouts(context: LaunchContext) -> list[GroupAction]:
     robot = PathJoinSubstitution([FindPackageShare('robot_bringup'), 'launch',
                                   'robot.launch.py'])
     return [GroupAction([
-                PushRosNamespace(f'scout{number}'),
+                PushROSNamespace(f'scout{number}'),
                 IncludeLaunchDescription(PythonLaunchDescriptionSource(robot),
                                          launch_arguments={'sensor_rate': '5.0'}.items())])
             for number in range(1, count + 1)]

@@ -4,7 +4,7 @@
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 from launch_ros.parameter_descriptions import ParameterValue
 
 
@@ -34,5 +34,5 @@ def generate_launch_description():
              parameters=[{'dock_x': number('dock_x'), 'dock_y': number('dock_y'),
                           'frame_id': 'map'}]),
     ]
-    robot = GroupAction([PushRosNamespace('scout'), *nodes])
+    robot = GroupAction([PushROSNamespace('scout'), *nodes])
     return LaunchDescription(arguments + [robot])

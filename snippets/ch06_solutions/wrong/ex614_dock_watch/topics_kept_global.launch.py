@@ -4,7 +4,7 @@
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 from launch_ros.parameter_descriptions import ParameterValue
 
 
@@ -38,5 +38,5 @@ def generate_launch_description():
              remappings=[('battery_low', '/battery_low'), ('dock_goal', '/dock_goal')]),
     ]
     # R9: one namespace for the whole group, so a node added later cannot miss it
-    robot = GroupAction([PushRosNamespace(LaunchConfiguration('robot')), *nodes])
+    robot = GroupAction([PushROSNamespace(LaunchConfiguration('robot')), *nodes])
     return LaunchDescription(arguments + [robot])

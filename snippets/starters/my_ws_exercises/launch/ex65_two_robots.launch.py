@@ -11,7 +11,7 @@ their settings from config/ex65_robots.yaml of this package.
 from launch import LaunchDescription
 from launch.actions import GroupAction  # noqa: F401  (you will need these)
 from launch.substitutions import PathJoinSubstitution  # noqa: F401
-from launch_ros.actions import Node, PushRosNamespace  # noqa: F401
+from launch_ros.actions import Node, PushROSNamespace  # noqa: F401
 from launch_ros.substitutions import FindPackageShare  # noqa: F401
 
 

@@ -5,7 +5,7 @@
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution
-from launch_ros.actions import Node, PushRosNamespace, SetParameter
+from launch_ros.actions import Node, PushROSNamespace, SetParameter
 from launch_ros.parameter_descriptions import ParameterFile
 from launch_ros.substitutions import FindPackageShare
 
@@ -27,7 +27,7 @@ def generate_launch_description():
                               description='Robot to start: config/robots/<robot>.yaml '
                                           'of rover_config'),
         GroupAction([
-            PushRosNamespace(robot),
+            PushROSNamespace(robot),
             SetParameter(name='use_sim_time', value=False),
             Node(package='my_robot_pkg', executable='sensor_publisher', output='screen',
                  parameters=layers),

@@ -4,7 +4,7 @@
 from launch import LaunchDescription
 from launch.actions import GroupAction
 from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
-from launch_ros.actions import Node, PushRosNamespace
+from launch_ros.actions import Node, PushROSNamespace
 
 
 def generate_launch_description():
@@ -14,7 +14,7 @@ def generate_launch_description():
     def robot(namespace: str) -> GroupAction:
         # The group ends the namespace with the robot: robot2 is not inside robot1.
         return GroupAction([
-            PushRosNamespace(namespace),
+            PushROSNamespace(namespace),
             Node(package='my_robot_pkg', executable='sensor_publisher', output='screen'),
             Node(package='my_robot_pkg', executable='data_processor', output='screen'),
             Node(package='my_robot_pkg', executable='robot_controller', output='screen',
