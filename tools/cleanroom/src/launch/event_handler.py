@@ -63,9 +63,12 @@ class BaseEventHandler:
         return bool(self.__matcher(event))
 
     def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
-        """Return a description and the entities the handler may produce."""
-        return (f'{type(self).__name__}(matcher={self.matcher_description!r}, '
-                f'handler={self.handler_description!r}, handle_once={self.handle_once})', [])
+        """Return a description and the entities the handler may produce.
+
+        Both descriptions are put in quotes as they are (None too), as Jazzy prints them.
+        """
+        return (f"{type(self).__name__}(matcher='{self.matcher_description}', "
+                f"handler='{self.handler_description}', handle_once={self.handle_once})", [])
 
     def handle(self, event: Event,
                context: LaunchContext) -> list[LaunchDescriptionEntity] | None:

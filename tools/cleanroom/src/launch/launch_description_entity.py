@@ -21,7 +21,7 @@ class LaunchDescriptionEntity:
         raise NotImplementedError(f'visit() not implemented for {type(self).__name__}')
 
     def describe(self) -> str:
-        """Return a one-line description (used by `ros2 launch --print`)."""
+        """Return a one-line description (`ros2 launch --print` has its own format)."""
         return self.__repr__()
 
     def describe_sub_entities(self) -> list[LaunchDescriptionEntity]:

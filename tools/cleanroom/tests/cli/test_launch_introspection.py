@@ -10,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+HERE = Path(__file__).parent
 # conformance case 01_basic_nodes, whose `ros2 launch -p` output is recorded
 BASIC_NODES = """\
 from launch import LaunchDescription
@@ -49,6 +50,7 @@ def test_print_shows_the_description_tree_without_launching(ros2, launch_file, f
 
 
 def test_print_names_cwd_env_and_shell_of_a_process(ros2, launch_file):
+    """Observed on Jazzy: the cwd is quoted twice (`cwd=''/tmp''`)."""
     path = launch_file(
         'from launch import LaunchDescription\n'
         'from launch.actions import ExecuteProcess\n'
@@ -57,7 +59,40 @@ def test_print_names_cwd_env_and_shell_of_a_process(ros2, launch_file):
         " shell=True)])\n")
     result = ros2('launch', '-p', path)
     assert result.stdout.splitlines()[1] == \
-        "└── ExecuteProcess(cmd=['ls', '-l'], cwd='/tmp', env=None, shell=True)"
+        "└── ExecuteProcess(cmd=['ls', '-l'], cwd=''/tmp'', env=None, shell=True)"
+
+
+def test_print_matches_jazzy_on_a_tour_of_entities(ros2):
+    """print_tour.expected is Jazzy's `ros2 launch -p` output for print_tour.launch.py.
+
+    Observed on Jazzy: any action but a process, LogInfo, EmitEvent and
+    RegisterEventHandler is `Action('<its repr>')` (groups, includes and timers
+    unexpanded); a Node is an ExecuteProcess with a bare '--ros-args'; an event
+    handler shows its matcher text and its actions below it, in a tree whose
+    last lines lose their '│'.  Only the addresses differ between runs.
+    """
+    result = ros2('launch', '-p', str(HERE / 'print_tour.launch.py'))
+    assert (result.returncode, result.stderr) == (0, '')
+    printed = re.sub(r'0x[0-9a-f]+', '0x…', result.stdout)
+    assert printed.splitlines() == (HERE / 'print_tour.expected').read_text().splitlines()
+
+
+def test_print_shows_a_launch_file_class_by_its_str(ros2, launch_file):
+    """Observed on Jazzy: `Action(str(action))`, `EmitEvent(event=<the event's name>)`."""
+    path = launch_file(
+        'from launch import Action, Event, LaunchDescription\n'
+        'from launch.actions import EmitEvent\n'
+        'class Mine(Action):\n'
+        "    def __str__(self):\n        return 'mine'\n"
+        'class MyEvent(Event):\n'
+        "    name = 'my.Event'\n"
+        'def generate_launch_description():\n'
+        '    return LaunchDescription([Mine(), EmitEvent(event=MyEvent()),'
+        ' EmitEvent(event=Event())])\n')
+    assert ros2('launch', '-p', path).stdout.splitlines()[1:] == [
+        "├── Action('mine')",
+        "├── EmitEvent(event='my.Event')",
+        "└── EmitEvent(event='launch.Event')"]
 
 
 def test_print_and_show_args_exclude_each_other(ros2, launch_file):

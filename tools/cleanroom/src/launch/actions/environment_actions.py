@@ -67,3 +67,9 @@ class AppendEnvironmentVariable(Action):
         if current:
             value = value + separator + current if prepend else current + separator + value
         context.environment[name] = value
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+SetEnvironmentVariable.__module__ = 'launch.actions.set_environment_variable'
+UnsetEnvironmentVariable.__module__ = 'launch.actions.unset_environment_variable'
+AppendEnvironmentVariable.__module__ = 'launch.actions.append_environment_variable'

@@ -89,3 +89,10 @@ class Shutdown(EmitEvent):
 
     def __init__(self, *, reason: str = 'reason not given', **kwargs: object) -> None:
         super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+RegisterEventHandler.__module__ = 'launch.actions.register_event_handler'
+UnregisterEventHandler.__module__ = 'launch.actions.unregister_event_handler'
+EmitEvent.__module__ = 'launch.actions.emit_event'
+Shutdown.__module__ = 'launch.actions.shutdown_action'

@@ -221,7 +221,7 @@ class ExecuteProcess(Action):
         def join(subs: SubstitutionsList) -> str:
             return ' + '.join(s.describe() for s in subs)
         cmd = ', '.join(join(c) for c in self._described_cmd())
-        cwd = None if self.cwd is None else join(self.cwd)
+        cwd = None if self.cwd is None else f"'{join(self.cwd)}'"  # quoted again, as Jazzy
         env = None if self.env is None else \
             '{' + ', '.join(f'{join(k)}: {join(v)}' for k, v in self.env) + '}'
         return f'ExecuteProcess(cmd=[{cmd}], cwd={cwd}, env={env}, shell={self.__shell})'

@@ -27,3 +27,8 @@ class UnsetLaunchConfiguration(UnsetInStore):
 
     def _store(self, context: LaunchContext) -> MutableMapping[str, str]:
         return context.launch_configurations
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+SetLaunchConfiguration.__module__ = 'launch.actions.set_launch_configuration'
+UnsetLaunchConfiguration.__module__ = 'launch.actions.unset_launch_configuration'

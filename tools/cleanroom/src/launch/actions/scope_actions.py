@@ -92,3 +92,12 @@ class PopLocals(Action):
     def execute(self, context: LaunchContext) -> None:
         """Pop."""
         context._pop_locals()
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+PushLaunchConfigurations.__module__ = 'launch.actions.push_launch_configurations'
+PopLaunchConfigurations.__module__ = 'launch.actions.pop_launch_configurations'
+ResetLaunchConfigurations.__module__ = 'launch.actions.reset_launch_configurations'
+PushEnvironment.__module__ = 'launch.actions.push_environment'
+PopEnvironment.__module__ = 'launch.actions.pop_environment'
+ResetEnvironment.__module__ = 'launch.actions.reset_environment'

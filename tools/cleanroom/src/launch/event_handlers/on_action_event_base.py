@@ -31,6 +31,9 @@ class OnActionEventBase(BaseEventHandler):
     `(event, context) -> entities`.
     """
 
+    # The action class the matcher description names, as Jazzy's does (OnProcessExit: ExecuteLocal).
+    _described_action_cls = 'Action'
+
     def __init__(self, *, action_matcher: ActionMatcher, on_event: object,
                  target_event_cls: type[Event], target_action_cls: type[Action] = Action,
                  **kwargs: object) -> None:
@@ -54,15 +57,18 @@ class OnActionEventBase(BaseEventHandler):
 
     @property
     def handler_description(self) -> str:
-        """What the handler does."""
+        """What the handler does: the callable as str() shows it, or '<actions>'."""
         if self.__callback is not None:
-            return f'<function {getattr(self.__callback, "__name__", "?")}>'
+            return str(self.__callback)
         return '<actions>'
 
     @property
     def matcher_description(self) -> str:
-        """Which events the handler takes."""
-        return f'event == {self.__target_event_cls.__name__}'
+        """Which events the handler takes, worded as Jazzy's `ros2 launch -p` shows it."""
+        text = f'event == {self.__target_event_cls.__name__}'
+        if self.__action_matcher is None:
+            return text
+        return f'{text} and {self._described_action_cls}(event.action)'
 
     def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
         """Return a description and the entities."""

@@ -14,6 +14,8 @@ class OnProcessIO(OnActionEventBase):
     return entities.
     """
 
+    _described_action_cls = 'ExecuteLocal'
+
     def __init__(self, *, target_action: Action | Callable | None = None,
                  on_stdin: Callable | None = None, on_stdout: Callable | None = None,
                  on_stderr: Callable | None = None, **kwargs: object) -> None:
@@ -21,12 +23,12 @@ class OnProcessIO(OnActionEventBase):
         from ..actions.execute_process import ExecuteProcess
 
         self.__by_fd = {0: on_stdin, 1: on_stdout, 2: on_stderr}
-        super().__init__(action_matcher=target_action, on_event=self.__dispatch,
+
+        def handle(event: ProcessIO, context: object) -> object:  # `-p` names it, as Jazzy's
+            return self.__by_fd[event.fd](event)
+        super().__init__(action_matcher=target_action, on_event=handle,
                          target_event_cls=ProcessIO, target_action_cls=ExecuteProcess,
                          **kwargs)
 
     def _match(self, event: Event) -> bool:
         return super()._match(event) and self.__by_fd.get(event.fd) is not None
-
-    def __dispatch(self, event: ProcessIO, context: object) -> object:
-        return self.__by_fd[event.fd](event)

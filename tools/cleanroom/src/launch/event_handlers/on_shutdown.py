@@ -13,6 +13,13 @@ if TYPE_CHECKING:
     from ..launch_context import LaunchContext
 
 
+def gen_handler(entities: list[LaunchDescriptionEntity]) -> Callable:
+    """Wrap fixed entities in a callable: Jazzy does, and `ros2 launch -p` names it so."""
+    def handler(event: Event, context: LaunchContext) -> list[LaunchDescriptionEntity]:
+        return entities
+    return handler
+
+
 class OnShutdown(BaseEventHandler):
     """Run `on_shutdown` (entities, or a callable `(event, context)`) when the launch ends.
 
@@ -23,31 +30,22 @@ class OnShutdown(BaseEventHandler):
     def __init__(self, *, on_shutdown: object, **kwargs: object) -> None:
         super().__init__(matcher=lambda event: isinstance(event, Shutdown), **kwargs)
         if callable(on_shutdown) and not isinstance(on_shutdown, LaunchDescriptionEntity):
-            self.__callback: Callable | None = on_shutdown
-            self.__entities: list[LaunchDescriptionEntity] = []
+            self.__callback: Callable = on_shutdown
         else:
-            self.__callback = None
-            self.__entities = normalize_entities(on_shutdown)
+            self.__callback = gen_handler(normalize_entities(on_shutdown))
 
     @property
     def handler_description(self) -> str:
-        """What the handler does."""
-        return '<function>' if self.__callback is not None else '<actions>'
+        """What the handler does: the callable, as str() shows it."""
+        return str(self.__callback)
 
     @property
     def matcher_description(self) -> str:
         """Which events the handler takes."""
         return 'event issubclass of launch.events.Shutdown'
 
-    def describe(self) -> tuple[str, list[LaunchDescriptionEntity]]:
-        """Return a description and the entities."""
-        text, _ = super().describe()
-        return (text, list(self.__entities))
-
     def handle(self, event: Event,
                context: LaunchContext) -> list[LaunchDescriptionEntity] | None:
-        """Return the entities, or what the callable returns."""
+        """Return what the callable returns (the entities, when entities were given)."""
         super().handle(event, context)
-        if self.__callback is not None:
-            return normalize_entities(self.__callback(event, context))
-        return self.__entities
+        return normalize_entities(self.__callback(event, context))

@@ -34,8 +34,8 @@ class NotSubstitution(Substitution):
         return self.__value
 
     def describe(self) -> str:
-        """Return e.g. NotSubstitution(LaunchConfig('sim'))."""
-        return f"NotSubstitution({' + '.join(s.describe() for s in self.__value)})"
+        """Return the operand's list repr, as Jazzy's `ros2 launch -p` shows it."""
+        return f'NotSubstitution({self.__value!r})'
 
     def perform(self, context: LaunchContext) -> str:
         """Return 'true' or 'false'."""
@@ -59,10 +59,8 @@ class _BinarySubstitution(Substitution):
         return self.__right
 
     def describe(self) -> str:
-        """Return e.g. AndSubstitution(left, right)."""
-        left = ' + '.join(s.describe() for s in self.__left)
-        right = ' + '.join(s.describe() for s in self.__right)
-        return f'{type(self).__name__}({left}, {right})'
+        """Return the operands' list reprs; Jazzy names Or 'AndSubstitution' too (observed)."""
+        return f'AndSubstitution({self.__left!r} {self.__right!r})'
 
 
 class AndSubstitution(_BinarySubstitution):
@@ -95,9 +93,8 @@ class _ManySubstitution(Substitution):
         return (_truth(context, a) for a in self.__args)
 
     def describe(self) -> str:
-        """Return e.g. AnySubstitution(a, b)."""
-        parts = ', '.join(' + '.join(s.describe() for s in a) for a in self.__args)
-        return f'{type(self).__name__}({parts})'
+        """Return the operands' list reprs, space separated, as Jazzy's `ros2 launch -p`."""
+        return f"{type(self).__name__}({' '.join(repr(a) for a in self.__args)})"
 
 
 class AnySubstitution(_ManySubstitution):

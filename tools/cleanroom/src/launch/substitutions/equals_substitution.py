@@ -65,10 +65,8 @@ class EqualsSubstitution(Substitution):
         return self.__right
 
     def describe(self) -> str:
-        """Return e.g. EqualsSubstitution(LaunchConfig('mode') 'sim')."""
-        left = ' + '.join(s.describe() for s in self.__left)
-        right = ' + '.join(s.describe() for s in self.__right)
-        return f'{type(self).__name__}({left} {right})'
+        """Return the operands' list reprs, as Jazzy's `ros2 launch -p` shows them."""
+        return f'{type(self).__name__}({self.__left!r} {self.__right!r})'
 
     def _equal(self, context: LaunchContext) -> bool:
         return values_equal(perform_substitutions(context, self.__left),

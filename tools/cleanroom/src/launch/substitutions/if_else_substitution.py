@@ -41,11 +41,9 @@ class IfElseSubstitution(Substitution):
         return self.__else_value
 
     def describe(self) -> str:
-        """Return a description."""
-        def join(subs: list[Substitution]) -> str:
-            return ' + '.join(s.describe() for s in subs)
-        return (f'IfElseSubstitution({join(self.__condition)}, {join(self.__if_value)}, '
-                f'{join(self.__else_value)})')
+        """Return the three list reprs, as Jazzy's `ros2 launch -p` shows them."""
+        return (f'IfElseSubstitution({self.__condition!r}, {self.__if_value!r}, '
+                f'{self.__else_value!r})')
 
     def perform(self, context: LaunchContext) -> str:
         """Return the chosen value."""

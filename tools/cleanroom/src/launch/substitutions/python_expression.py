@@ -25,6 +25,8 @@ class PythonExpression(Substitution):
                  python_modules: Iterable[SomeSubstitutionsType] = ('math',)) -> None:
         super().__init__()
         self.__expression = normalize_to_list_of_substitutions(expression)
+        if isinstance(python_modules, (str, Substitution)):  # one module, not its letters
+            python_modules = [python_modules]
         self.__python_modules = [normalize_to_list_of_substitutions(m) for m in python_modules]
 
     @property
@@ -38,8 +40,11 @@ class PythonExpression(Substitution):
         return self.__python_modules
 
     def describe(self) -> str:
-        """Return a description of the expression."""
-        return f"PythonExpr({' + '.join(s.describe() for s in self.__expression)})"
+        """Return the expression and the modules, as Jazzy's `ros2 launch -p` shows them."""
+        def join(subs: list[Substitution]) -> str:
+            return ' + '.join(s.describe() for s in subs)
+        modules = ', '.join(join(m) for m in self.__python_modules)
+        return f'PythonExpr({join(self.__expression)}, [{modules}])'
 
     def perform(self, context: LaunchContext) -> str:
         """Evaluate the expression and return str() of the result."""

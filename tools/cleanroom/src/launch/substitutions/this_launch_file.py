@@ -40,3 +40,7 @@ class ThisLaunchFileDir(Substitution):
         """Return the folder."""
         return _current_launch_file_local(context, 'current_launch_file_directory',
                                           'ThisLaunchFileDir')
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+ThisLaunchFileDir.__module__ = 'launch.substitutions.this_launch_file_dir'

@@ -59,3 +59,7 @@ class LoadComposableNodes(Action):
         target = getattr(self.__target, 'name', None) or self.__target
         raise ComposableNodesUnavailableError(
             UNAVAILABLE.format(what=f'LoadComposableNodes into {_describe(target)}'))
+
+
+# Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
+LoadComposableNodes.__module__ = 'launch_ros.actions.load_composable_nodes'

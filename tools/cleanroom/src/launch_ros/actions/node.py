@@ -60,10 +60,10 @@ class Node(ExecuteProcess):
             cmd += ['--ros-args', *ros_arguments]
         super().__init__(cmd=cmd, name=exec_name, **kwargs)
         self.__base_cmd = list(self.cmd)
-        # What `ros2 launch -p` shows before execution (recorded Jazzy output).
-        self.__described_name_args = [] if name is None else [
-            '--ros-args', '-r',
-            LocalSubstitution("ros_specific_arguments['name']", description='node name')]
+        # What `ros2 launch -p` shows before execution (observed on Jazzy): a bare
+        # '--ros-args' always (a second one after ros_arguments), the name a placeholder.
+        self.__described_name_args = ['--ros-args'] + ([] if name is None else [
+            '-r', LocalSubstitution("ros_specific_arguments['name']", description='node name')])
         self.__package = package
         self.__executable = executable
         self.__node_name = None if name is None else normalize_to_list_of_substitutions(name)

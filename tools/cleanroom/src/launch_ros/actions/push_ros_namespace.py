@@ -11,7 +11,7 @@ from ..utilities.ros_state import pushed_namespace, set_pushed_namespace
 from ..utilities.substitution_values import perform_text
 
 
-class PushRosNamespace(Action):
+class PushROSNamespace(Action):
     """Push a namespace; it is popped with the enclosing scoped GroupAction.
 
     Relative pushes compose ('robot1' then 'arm' gives /robot1/arm), an
@@ -34,4 +34,4 @@ class PushRosNamespace(Action):
         return None
 
 
-PushROSNamespace = PushRosNamespace
+PushRosNamespace = PushROSNamespace  # Jazzy's class is PushROSNamespace (its repr says so)

@@ -40,6 +40,8 @@ class OnStateTransition(EventHandler):
 
     @property
     def matcher_description(self) -> str:
-        wanted = ', '.join(f'{k}={v!r}' for k, v in self.__filters.items() if v is not None)
-        node = getattr(self.__target, 'node_name', None)
-        return f'event == StateTransition and node == {node!r} and ({wanted or "any"})'
+        """Which events: Jazzy names the target node by its id only (the labels not at all)."""
+        if self.__target is None:
+            return 'event == StateTransition'
+        node = f'LifecycleNode({hex(id(self.__target))})'
+        return f'event == StateTransition and event.action == {node}'

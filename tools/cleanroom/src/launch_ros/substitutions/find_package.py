@@ -30,7 +30,8 @@ class FindPackage(Substitution):
         return self.find(perform_substitutions(context, self.__package))
 
     def describe(self) -> str:
-        return "Pkg('{}')".format(' + '.join(s.describe() for s in self.__package))
+        """Return e.g. FindPackageShare(pkg='demo'), as Jazzy's `ros2 launch -p` shows it."""
+        return f"{type(self).__name__}(pkg={' + '.join(s.describe() for s in self.__package)})"
 
 
 class FindPackagePrefix(FindPackage):

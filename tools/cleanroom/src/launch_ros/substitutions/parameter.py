@@ -22,7 +22,8 @@ class Parameter(Substitution):
         return self.__name
 
     def describe(self) -> str:
-        return 'Parameter({})'.format(' + '.join(s.describe() for s in self.__name))
+        """Return e.g. Parameter(name='use_sim_time'), as Jazzy's `ros2 launch -p` shows it."""
+        return f"Parameter(name={' + '.join(s.describe() for s in self.__name)})"
 
     def perform(self, context: LaunchContext) -> str:
         name = perform_substitutions(context, self.__name)
