@@ -12,8 +12,9 @@ from pathlib import Path
 
 import psutil
 import pytest
-from launch.actions import ExecuteProcess, RegisterEventHandler, Shutdown
-from launch.event_handlers import OnProcessIO
+from launch.actions import EmitEvent, ExecuteProcess, LogInfo, RegisterEventHandler, Shutdown
+from launch.event_handlers import OnProcessExit, OnProcessIO, OnProcessStart
+from launch.events import Shutdown as ShutdownEvent
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')  # the ros2 of this environment
 
@@ -188,3 +189,44 @@ def test_shutdown_while_processes_are_still_starting(run_launch):
     assert sorted(result.names) == [f's{i}-{i + 1}' for i in range(5)]
     assert result.output.count("sending signal 'SIGINT'") == 5
     assert 'escalating' not in result.output
+
+
+REQUIRED = '[INFO] [launch]: process[{}] was required: shutting down launched system'
+
+
+@pytest.mark.parametrize('code, ended', [
+    (0, '[INFO] [critical-2]: process has finished cleanly'),
+    (3, '[ERROR] [critical-2]: process has died'),
+])
+def test_a_required_process_exit_is_logged_before_the_shutdown(run_launch, code, ended):
+    """Observed on Jazzy with `ExecuteProcess(..., on_exit=Shutdown())`, whatever the exit code.
+
+    The launch logger says which process was required, right after that
+    process's exit line and before the others are signalled.
+    """
+    result = run_launch([
+        ExecuteProcess(cmd=['sleep', '20'], name='bystander'),
+        ExecuteProcess(cmd=['sh', '-c', f'sleep 0.3; exit {code}'], name='critical',
+                       on_exit=Shutdown())])
+    lines = result.output.splitlines()
+    required = lines.index(REQUIRED.format('critical-2'))
+    assert lines[required - 1].startswith(ended)
+    assert lines[required + 1] == "[INFO] [bystander-1]: sending signal 'SIGINT' to " \
+        'process[bystander-1]'
+    assert result.returncode == 0
+
+
+def test_only_a_shutdown_run_by_a_process_exit_names_the_process(run_launch):
+    """Observed on Jazzy: an OnProcessExit handler's Shutdown logs it too; a Shutdown
+    started by a process start, or an EmitEvent of the Shutdown event, does not.
+    """
+    exits = ExecuteProcess(cmd=['true'], name='exits')
+    starts = ExecuteProcess(cmd=['sleep', '20'], name='starts')
+    handled = run_launch([exits, RegisterEventHandler(OnProcessExit(
+        target_action=exits, on_exit=[LogInfo(msg='exited'), Shutdown()]))])
+    assert REQUIRED.format('exits-1') in handled.output.splitlines()
+    started = run_launch([starts, RegisterEventHandler(OnProcessStart(
+        target_action=starts, on_start=[Shutdown()]))])
+    emitted = run_launch([ExecuteProcess(cmd=['true'], name='emits',
+                                         on_exit=EmitEvent(event=ShutdownEvent()))])
+    assert 'was required' not in started.output + emitted.output

@@ -8,7 +8,9 @@ from ..action import Action
 from ..event import Event
 from ..event_handler import BaseEventHandler
 from ..events import Shutdown as ShutdownEvent
+from ..events.process import ProcessExited
 from ..launch_description_entity import LaunchDescriptionEntity
+from ..logging import get_logger
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -89,6 +91,14 @@ class Shutdown(EmitEvent):
 
     def __init__(self, *, reason: str = 'reason not given', **kwargs: object) -> None:
         super().__init__(event=ShutdownEvent(reason=reason), **kwargs)
+
+    def execute(self, context: LaunchContext) -> None:
+        """Say which process was required when a process exit runs it, as Jazzy logs."""
+        event = context.get_locals_as_dict().get('event')
+        if isinstance(event, ProcessExited):  # e.g. ExecuteProcess(on_exit=Shutdown())
+            get_logger('launch').info(
+                f'process[{event.process_name}] was required: shutting down launched system')
+        super().execute(context)
 
 
 # Shown in reprs (`ros2 launch -p` prints them) under the module names Jazzy uses.
