@@ -17,7 +17,7 @@ from launch_ros.utilities.namespace_utils import (
     ('/robot1', '/fixed', '/fixed'),
     ('/robot1/arm', None, '/robot1/arm'),
     ('/', 'ns', '/ns'),
-    (None, '', None),
+    (None, '', '/'),  # Node(namespace='') is the root: Jazzy passes -r __ns:=/ (observed)
     ('/fleet', '', '/fleet'),
 ])
 def test_full_node_namespace(pushed, own, expected):

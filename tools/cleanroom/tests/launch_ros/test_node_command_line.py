@@ -1,4 +1,5 @@
 """Node command lines, started for real from a colcon-built package."""
+import pytest
 from launch.actions import DeclareLaunchArgument, GroupAction
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node, PushROSNamespace, PushRosNamespace
@@ -71,6 +72,39 @@ def test_namespaces_push_compose_and_absolute(test_package, run_launch):
         tail = record.node_cmd(name)[1:]
         ns_args = ['-r', '__ns:=' + namespace] if namespace else []
         assert tail == ['--ros-args', '-r', '__node:=' + name, *ns_args], name
+
+
+UNSET = object()
+
+
+@pytest.mark.parametrize('namespace, pushed, expected', [
+    (UNSET, None, []),
+    ('', None, ['-r', '__ns:=/']),
+    ('/', None, ['-r', '__ns:=/']),
+    ('ns', None, ['-r', '__ns:=/ns']),
+    ('/ns', None, ['-r', '__ns:=/ns']),
+    ('a/b', None, ['-r', '__ns:=/a/b']),
+    (UNSET, 'grp', ['-r', '__ns:=/grp']),
+    ('', 'grp', ['-r', '__ns:=/grp']),
+    ('ns', 'grp', ['-r', '__ns:=/grp/ns']),
+    ('/ns', 'grp', ['-r', '__ns:=/ns']),
+])
+@pytest.mark.parametrize('name', [None, 'n'])
+def test_namespace_arguments_as_jazzy_passes_them(test_package, run_launch, namespace, pushed,
+                                                 expected, name):
+    """Observed on Jazzy (a node printing its argv): namespace '' is the root, `-r __ns:=/`.
+
+    Not given (None), no `__ns` at all; inside a PushRosNamespace group, '' and
+    not given both take the pushed namespace.
+    """
+    keywords = {} if namespace is UNSET else {'namespace': namespace}
+    if name is not None:
+        keywords['name'] = name
+    node = Node(package=PKG, executable='noop', **keywords)
+    record = run_launch([node] if pushed is None else [GroupAction([PushRosNamespace(pushed),
+                                                                    node])])
+    name_args = [] if name is None else ['-r', '__node:=' + name]
+    assert record.processes[0]['cmd'][1:] == ['--ros-args', *name_args, *expected]
 
 
 def test_additional_env_and_executable_on_path(test_package, run_launch):

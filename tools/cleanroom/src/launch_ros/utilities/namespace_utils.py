@@ -37,10 +37,13 @@ def prefix_namespace(base_ns: str | None, namespace: str | None) -> str | None:
 
 
 def full_node_namespace(pushed: str | None, namespace: str | None) -> str | None:
-    """The absolute namespace a node ends up in, or None if it has none at all."""
+    """The absolute namespace a node ends up in, or None if it has none at all.
+
+    A namespace given as '' outside any push is the root: Jazzy passes `-r __ns:=/`.
+    """
     composed = prefix_namespace(pushed, namespace)
     if composed is None:
-        return None
+        return None if namespace is None else '/'
     return make_namespace_absolute(composed)
 
 
