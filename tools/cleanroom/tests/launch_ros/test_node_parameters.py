@@ -2,9 +2,10 @@
 import os
 
 import pytest
-from launch.actions import DeclareLaunchArgument
+from launch.actions import DeclareLaunchArgument, GroupAction, RegisterEventHandler
+from launch.event_handlers import OnProcessStart
 from launch.substitutions import LaunchConfiguration, PathJoinSubstitution, TextSubstitution
-from launch_ros.actions import Node
+from launch_ros.actions import Node, PushRosNamespace
 from launch_ros.parameter_descriptions import Parameter, ParameterFile, ParameterValue
 from launch_ros.substitutions import FindPackageShare
 from launch_ros.utilities import param_files
@@ -43,6 +44,44 @@ def test_full_name_key_when_name_and_namespace(test_package, run_launch):
     key, params, _ = only_params(record.node_cmd('driver'))
     assert key == '/robot_0/driver'
     assert params == {'rate_hz': 1.0}
+
+
+UNSET = object()
+
+
+@pytest.mark.parametrize('name, namespace, pushed, key', [
+    ('n', 'ns', None, '/ns/n'),
+    ('n', UNSET, None, '/**'),
+    (UNSET, 'ns', None, '/**'),
+    (UNSET, UNSET, None, '/**'),
+    ('n', '/abs', None, '/abs/n'),
+    ('n', '', None, '/n'),
+    ('n', '/', None, '/n'),
+    ('n', 'a/b', None, '/a/b/n'),
+    ('n', UNSET, 'grp', '/grp/n'),
+    (UNSET, UNSET, 'grp', '/**'),
+    ('n', 'ns', 'grp', '/grp/ns/n'),
+    ('n', '', 'grp', '/grp/n'),
+])
+def test_dict_file_is_keyed_by_the_full_name_once_name_and_namespace_are_known(
+        test_package, run_launch, name, namespace, pushed, key):
+    """Observed on Jazzy (the file a node got, printed by the node): the key is the
+    node's full name when it has a name and a namespace (its own, pushed or ''),
+    else '/**'; the values sit under `ros__parameters`.
+    """
+    texts = []
+
+    def read_file(event, context):
+        path = event.cmd[event.cmd.index('--params-file') + 1]
+        with open(path) as handle:
+            texts.append(handle.read())
+
+    keywords = {kw: value for kw, value in (('name', name), ('namespace', namespace))
+                if value is not UNSET}
+    node = Node(package=PKG, executable='noop', parameters=[{'a': 1}], **keywords)
+    entities = [node] if pushed is None else [GroupAction([PushRosNamespace(pushed), node])]
+    run_launch([RegisterEventHandler(OnProcessStart(on_start=read_file)), *entities])
+    assert texts == [f'{key}:\n  ros__parameters:\n    a: 1\n']
 
 
 def test_substitution_values_are_typed_by_yaml(test_package, run_launch):
