@@ -141,7 +141,7 @@ def test_the_reaper_stops_a_ros2_daemon_without_calling_it_a_leftover(monkeypatc
     """Jazzy's `ros2` leaves its daemon running on purpose (a command line as
     observed there: `... --name ros2-daemon --ros-domain-id N ...`); the build
     stops it after a lesson without failing the lesson, and waits for nothing."""
-    daemon_like = ['python3', '-c', 'import time; time.sleep(300)', '--name', 'ros2-daemon',
+    daemon_like = [sys.executable, '-c', 'import time; time.sleep(300)', '--name', 'ros2-daemon',
                    '--ros-domain-id', '7']
     with isolation.acquire_domain() as mine:
         env = mine.apply(dict(os.environ))
