@@ -146,11 +146,23 @@ def test_parameter_file_with_substitutions(test_package, run_launch, monkeypatch
     assert verbatim['path'] == str(test_package / 'share' / PKG / 'config' / 'substs.yaml')
 
 
-def test_temporary_files_are_removed_when_the_launch_ends(test_package, run_launch):
-    record = run_launch([Node(package=PKG, executable='noop', name='t',
-                              parameters=[{'a': 1}])])
-    _, _, path = only_params(record.node_cmd('t'))
-    assert not os.path.exists(path)
+def test_a_dictionary_file_stays_and_a_substituted_file_goes_when_the_launch_ends(
+        test_package, run_launch, monkeypatch):
+    """Observed on Jazzy: the `launch_params_*` file of a parameter dictionary stays in
+    the temporary folder after the launch; the one ParameterFile(allow_substs=True)
+    wrote is removed."""
+    monkeypatch.setenv('LR_TEST_HOME', '/home/robot')
+    record = run_launch([
+        DeclareLaunchArgument('robot', default_value='bot_a'),
+        Node(package=PKG, executable='noop', name='t', parameters=[{'a': 1}]),
+        Node(package=PKG, executable='noop', name='s', parameters=[ParameterFile(
+            str(test_package / 'share' / PKG / 'config' / 'substs.yaml'), allow_substs=True)]),
+    ])
+    _, _, kept = only_params(record.node_cmd('t'))
+    _, _, removed = only_params(record.node_cmd('s'))
+    assert os.path.exists(kept)
+    os.unlink(kept)
+    assert not os.path.exists(removed)
     assert param_files.temporary_files() == []
 
 

@@ -1,10 +1,12 @@
 """Temporary parameter files (`launch_params_*`) and their removal.
 
-Nodes get parameter dicts through `--params-file`, as in Jazzy, so the
-files must exist while the node starts and be gone once the launch ends.
-Every file written here is remembered; `remove_temporary_files()` is called
-from an OnShutdown handler, and an `atexit` hook catches whatever a crashed
-or interrupted launch left.
+Nodes get parameter dicts through `--params-file`, as in Jazzy. As observed
+on Jazzy, the file of a node's parameter dicts stays in the temporary folder
+after the launch (nobody removes it), while the file a
+`ParameterFile(allow_substs=True)` writes is removed at shutdown: only the
+latter is remembered here; `remove_temporary_files()` is called from an
+OnShutdown handler, and an `atexit` hook catches whatever a crashed or
+interrupted launch left.
 """
 from __future__ import annotations
 
@@ -35,26 +37,29 @@ def parameters_document(node_key: str, params: Mapping[str, Any]) -> dict[str, A
     return {node_key: {'ros__parameters': dict(params)}}
 
 
+def _write(text: str) -> str:
+    with tempfile.NamedTemporaryFile(mode='w', prefix=TEMP_PREFIX, delete=False) as handle:
+        handle.write(text)
+        return handle.name
+
+
 def write_temporary_file(text: str, owner: Hashable = None) -> str:
     """Write text to a fresh `launch_params_*` file and remember it for cleanup.
 
     `owner` (a launch's key, see `remove_temporary_files`) lets two launches
     in one process clean up only their own files.
     """
-    with tempfile.NamedTemporaryFile(mode='w', prefix=TEMP_PREFIX, delete=False) as handle:
-        handle.write(text)
-        path = handle.name
+    path = _write(text)
     with _lock:
         _created.setdefault(owner, []).append(path)
     return path
 
 
-def write_parameters_file(node_key: str, params: Mapping[str, Any],
-                          owner: Hashable = None) -> str:
-    """Dump already-typed, already-flattened parameters for one node key."""
-    text = yaml.dump(parameters_document(node_key, params), Dumper=_Dumper,
-                     default_flow_style=False, allow_unicode=True)
-    return write_temporary_file(text, owner)
+def write_parameters_file(node_key: str, params: Mapping[str, Any]) -> str:
+    """Dump already-typed, already-flattened parameters for one node key into a
+    `launch_params_*` file that stays after the launch, as Jazzy's does."""
+    return _write(yaml.dump(parameters_document(node_key, params), Dumper=_Dumper,
+                            default_flow_style=False, allow_unicode=True))
 
 
 def temporary_files(owner: Hashable = None) -> list[str]:

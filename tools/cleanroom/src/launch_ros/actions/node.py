@@ -26,7 +26,7 @@ from ..utilities.command_line import (
     ros_specific_arguments,
 )
 from ..utilities.evaluate_parameters import evaluate_parameters
-from ..utilities.launch_cleanup import ensure_cleanup_registered, owner_key
+from ..utilities.launch_cleanup import ensure_cleanup_registered
 from ..utilities.namespace_utils import full_node_namespace, fully_qualified_name
 from ..utilities.normalize_parameters import normalize_parameters
 from ..utilities.normalize_remap_rule import evaluate_remap_rules, normalize_remap_rules
@@ -143,8 +143,7 @@ class Node(ExecuteProcess):
                 entries.append(entry)
         for item in evaluated:
             if isinstance(item, dict):
-                path = write_parameters_file(self._parameter_file_key(name, namespace), item,
-                                             owner=owner_key(context))
+                path = write_parameters_file(self._parameter_file_key(name, namespace), item)
                 entries.append(ParamFileArg(path))
             elif isinstance(item, tuple):
                 entries.append(ParamArg(*item))
