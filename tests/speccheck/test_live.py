@@ -13,6 +13,8 @@ from std_msgs.msg import Float32
 
 from .._polling import wait_for
 
+pytestmark = pytest.mark.ros  # launches systems and checks them live
+
 MET, FAILED = Status.MET, Status.FAILED
 WINDOW = 2.0
 

@@ -10,6 +10,8 @@ from textbook.lessons import load
 
 from ._lesson_files import code_cells, write_lesson
 
+pytestmark = pytest.mark.lesson  # executes small notebooks in kernels, as the build does
+
 
 def test_outputs_are_recorded_in_an_isolated_sourced_environment(tmp_path):
     lesson = load(write_lesson(tmp_path, code_cells(

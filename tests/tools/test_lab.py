@@ -27,6 +27,8 @@ from textbook import lab, lab_kernel, paths, reaper
 
 from .._polling import wait_for
 
+pytestmark = pytest.mark.lesson  # starts kernels and JupyterLab
+
 # What a lesson's first cell would show, as JSON on one line.
 PROBE_CELL = textwrap.dedent("""
     import json, os, labkit

@@ -18,6 +18,8 @@ from std_msgs.msg import String
 
 from tests._polling import wait_for
 
+pytestmark = pytest.mark.ros  # publishes and subscribes on a ROS graph
+
 RATE = 20.0  # Hz the test publisher is timed at
 WINDOW = 3.0  # seconds of measurement
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging

@@ -4,11 +4,14 @@ publisher not yet discovered would otherwise get a best effort subscription,
 which loses large messages (lesson 6.10 measures right after each start)."""
 from __future__ import annotations
 
+import pytest
 from labkit import observer
 from labkit.rates import QUEUE_DEPTH, matching_qos, wait_for_publishers
 from rclpy.qos import ReliabilityPolicy
 
 from tests.tools.test_labkit_rates import HANG_GUARD, Talker
+
+pytestmark = pytest.mark.ros  # publishes and subscribes on a ROS graph
 
 
 def test_waits_until_a_new_publisher_is_discovered():

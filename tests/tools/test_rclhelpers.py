@@ -29,6 +29,8 @@ from textbook import paths
 
 from .._polling import poll, still_running
 
+pytestmark = pytest.mark.ros  # creates rclpy nodes and services
+
 RCLHELPERS = paths.TOOLS / 'rclhelpers'
 
 
