@@ -27,6 +27,7 @@ from rclpy.parameter import parameter_value_to_python
 from textbook import paths
 
 from .._polling import poll
+from .._terminal import terminal_popen
 from ._shown_snippets import launch_files_included_by
 
 LESSONS = [paths.LESSONS / 'ch06/L1/01_anatomy_of_a_launch_file.md',
@@ -136,10 +137,11 @@ def _stop(proc: subprocess.Popen) -> str:
 
 @contextmanager
 def launched(case: Case, ros_env: dict[str, str]):
-    """``ros2 launch ...`` running in its own process group; yields the Popen."""
-    proc = subprocess.Popen(_command(case), env=ros_env, cwd=paths.WORKSPACE,
-                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                            start_new_session=True)
+    """``ros2 launch ...`` running in its own process group, with a terminal as its
+    stdin as in a shell (so Ctrl+C to the group is a terminal's); yields the Popen."""
+    proc = terminal_popen(_command(case), env=ros_env, cwd=paths.WORKSPACE,
+                          stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          start_new_session=True)
     try:
         yield proc
     finally:

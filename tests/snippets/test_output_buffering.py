@@ -19,6 +19,8 @@ from contextlib import contextmanager
 import pytest
 from textbook import paths
 
+from .._terminal import terminal_popen
+
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
 
 
@@ -26,7 +28,7 @@ class Launch:
     """`ros2 launch` in its own process group, its output collected line by line."""
 
     def __init__(self, launch_file: str, env: dict[str, str]) -> None:
-        self.proc = subprocess.Popen(
+        self.proc = terminal_popen(  # a terminal's stdin: stop() is a terminal's Ctrl+C
             ['ros2', 'launch', 'my_robot_pkg', launch_file], env=env, cwd=paths.WORKSPACE,
             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
             start_new_session=True)
