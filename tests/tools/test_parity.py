@@ -24,7 +24,9 @@ def test_only_what_varies_between_runs_is_normalised():
             '[INFO] [a-1]: process has finished cleanly [pid 4712]\n'
             "Action('<launch.actions.group_action.GroupAction object at 0x7f3a9c0b1d90>')\n"
             '--params-file /tmp/launch_params_k2j3h4l5\n'
-            'ROS_DOMAIN_ID=42 and robot_count 2\n')
+            'ROS_DOMAIN_ID=42 and robot_count 2\n'
+            'Finished <<< my_robot_pkg [3.04s] / [2min 55s]\n'
+            '[0.797s] WARNING:colcon.colcon_core.shell:The following packages\n')
     assert normalise(text) == [
         '[INFO] [launch]: All log files can be found below /root/.ros/log/LOG-DIR',
         '[INFO] [a-1]: process started with pid [PID]',
@@ -33,6 +35,8 @@ def test_only_what_varies_between_runs_is_normalised():
         "Action('<launch.actions.group_action.GroupAction object at 0x…>')",
         '--params-file /tmp/launch_params_…',
         'ROS_DOMAIN_ID=… and robot_count 2',
+        'Finished <<< my_robot_pkg […s] / […s]',
+        '[…s] WARNING:colcon.colcon_core.shell:The following packages',
     ]
 
 

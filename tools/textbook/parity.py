@@ -51,6 +51,8 @@ _VARYING = [
     (re.compile(r'\[\d{9,}\.\d+\]'), '[TIME]'),
     (re.compile(r'launch_params_\w+'), 'launch_params_…'),
     (re.compile(r'ROS_DOMAIN_ID=\d+'), 'ROS_DOMAIN_ID=…'),
+    # colcon's durations: `[3.04s]`, `[2min 55s]`, a log line's `[0.797s]`
+    (re.compile(r'\[(\d+min )?\d+(\.\d+)?s\]'), '[…s]'),
     (re.compile(re.escape(str(paths.RUNS)) + r'/[\w.-]+'), '~/ros2_ws'),
 ]
 _STARTED = re.compile(r'^\[INFO\] \[[\w.-]+\]: process started with pid')
