@@ -13,7 +13,7 @@ ENDED = re.compile(r'^\[INFO\] \[([\w.]+)-\d+\]: process has finished cleanly')
 #: A node that ignores Ctrl+C's SIGINT and SIGTERM while Fast DDS deletes its
 #: participant is escalated by launch, exactly as Jazzy escalates it, and the
 #: test's "every process finished cleanly" fails.  The cause, found with
-#: tools/bench/soak_shutdown.py (about 1 stop in 300 hangs): rmw_fastrtps's
+#: tools/bench/soak_shutdown.py (1 node stop in 300 to 800 hangs): rmw_fastrtps's
 #: `set_listener(nullptr)` waits with an infinite deadline while a discovery
 #: callback holds its mutex; the PyPI wheel's libfastrtps (built against glibc
 #: 2.28) waits with pthread_cond_timedwait, the deadline overflows to a negative
