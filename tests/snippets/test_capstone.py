@@ -214,6 +214,10 @@ def test_respawn_and_shutdown_when_the_safety_monitor_dies(ros_env):
     with _start('capstone.launch.py', ros_env, robot_count='1') as run:
         run.wait_for_nodes(['/turtlesim', *robot_nodes('turtle1')], timeout=HANG_GUARD)
         run.wait_for_output(_node_log('turtle1', 'mission_recorder', 'Active'), HANG_GUARD)
+        # A waypoint reached: the monitor has readings and passes commands. Before
+        # that it may still hold its start-up stop, and a kill would log no new one.
+        run.wait_for_output(_node_log('turtle1', 'patrol_planner', 'Waypoint reached'),
+                            HANG_GUARD)
         sensor = _pid(run, 'wall_sensor')
         killed_at = len(run.lines) - 1
         os.kill(sensor, signal.SIGKILL)
