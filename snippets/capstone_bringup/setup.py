@@ -22,4 +22,5 @@ setup(
     maintainer_email='textbook@example.com',
     description='Launch and parameter files of the capstone robot system (chapter 7).',
     license='Apache-2.0',
+    tests_require=['pytest'],
 )

@@ -23,6 +23,7 @@ setup(
     description='A battery simulator, a low-battery monitor and a dock planner, built from '
                 'a written specification in the lesson on spec-driven systems.',
     license='Apache-2.0',
+    tests_require=['pytest'],
     entry_points={
         'console_scripts': [
             'battery_sim = dock_watch_pkg.battery_sim:main',
