@@ -137,40 +137,35 @@ def test_sigint_to_the_launch_only_escalates_to_sigterm(start_launch):
     assert not alive
 
 
-def test_sigint_to_a_noninteractive_launch_is_sent_on(start_launch):
-    proc = start_launch('--noninteractive', 'cr_pkg', 'procs.launch.py')
+def _signal_launch(proc: subprocess.Popen, signum: int) -> str:
+    """Send `signum` to `ros2 launch` alone; it must exit 0 and take every child along.
+    Returns its output."""
     children = _children(proc)
-    proc.send_signal(signal.SIGINT)
+    proc.send_signal(signum)
     out, _ = proc.communicate(timeout=20)
     assert proc.returncode == 0
-    assert "sending signal 'SIGINT' to process[sleeper-2]" in out
-    assert 'escalating' not in out
     _gone, alive = psutil.wait_procs(children, timeout=5)
     assert not alive
+    return out
+
+
+def test_sigint_to_a_noninteractive_launch_is_sent_on(start_launch):
+    out = _signal_launch(start_launch('--noninteractive', 'cr_pkg', 'procs.launch.py'),
+                         signal.SIGINT)
+    assert "sending signal 'SIGINT' to process[sleeper-2]" in out
+    assert 'escalating' not in out
 
 
 def test_a_launch_without_a_terminal_is_noninteractive(start_launch):
     """As Jazzy's: stdin not a terminal turns --noninteractive on; SIGINT is sent on at once."""
-    proc = start_launch('cr_pkg', 'procs.launch.py')
-    children = _children(proc)
-    proc.send_signal(signal.SIGINT)
-    out, _ = proc.communicate(timeout=20)
-    assert proc.returncode == 0
+    out = _signal_launch(start_launch('cr_pkg', 'procs.launch.py'), signal.SIGINT)
     assert "[INFO] [sleeper-1]: sending signal 'SIGINT' to process[sleeper-1]" in out
     assert 'escalating' not in out
-    _gone, alive = psutil.wait_procs(children, timeout=5)
-    assert not alive
 
 
 def test_sigterm_to_ros2_launch_stops_all_children(start_launch):
-    proc = start_launch('cr_pkg', 'procs.launch.py')
-    children = _children(proc)
-    proc.send_signal(signal.SIGTERM)
-    out, _ = proc.communicate(timeout=20)
-    assert proc.returncode == 0
+    out = _signal_launch(start_launch('cr_pkg', 'procs.launch.py'), signal.SIGTERM)
     assert "sending signal 'SIGINT' to process[sleeper-3]" in out
-    _gone, alive = psutil.wait_procs(children, timeout=5)
-    assert not alive
 
 
 def test_killed_launch_takes_its_children_along(start_launch):
