@@ -1,10 +1,14 @@
 """Every exercise check, proven both ways: it fails on the untouched starter
 and on each catalogued wrong answer (naming the mistake), and passes on the
-book's solution.
+book's solution.  The passing side is the lesson's own evidence: the book's
+build applies each solution and its check cell raises when the check fails
+(labkit.exercises.check), so tests/lessons executing the lesson proves it;
+grading the solution here again would launch the same system twice.
+test_every_exercise_is_solved_and_checked_in_a_lesson keeps that true.
 
 The book's snippets workspace (built once) is the underlay; each exercise
 gets its own overlay workspace, built on first use, holding one copy of the
-student's package per case (`ex_starter`, `ex_solution`, `ex_wrong_<n>`).
+student's package per case (`ex_starter`, `ex_wrong_<n>`).
 A student's overlay on a sourced workspace works the same way, and
 `-k ex611` builds only what exercise 6.11 needs.
 Each check launches its case as a student's terminal would, from a process
@@ -34,7 +38,7 @@ VERDICT_NAMES = re.compile(r'^# Verdict names: (.+)$', re.MULTILINE)
 @dataclass(frozen=True)
 class Case:
     exercise: str
-    kind: str  # 'starter', 'solution' or 'wrong'
+    kind: str  # 'starter' or 'wrong' (the solution: see the module docstring)
     name: str = ''
     package: str = ''
 
@@ -48,7 +52,6 @@ def _cases() -> list[Case]:
         cases.append(Case(exercise.id, 'starter', package='ex_starter'))
         for number, name in enumerate(exercise.wrong_answers()):
             cases.append(Case(exercise.id, 'wrong', name, f'ex_wrong_{exercise.id}_{number}'))
-        cases.append(Case(exercise.id, 'solution', package='ex_solution'))
     return cases
 
 
@@ -103,13 +106,9 @@ def exercise_workspaces(tmp_path_factory, book_underlay: StudentPackage
 def _build_cases(workspace: Path, exercise_id: str, underlay: dict[str, str]) -> Path:
     """The cases of one exercise, each a whole student package as the book's
     lessons leave it: every exercise's starter files (an exercise may build on an
-    earlier one's file, as 6.2.2 on 6.2.1's), the solution package with every
-    solution, a wrong answer over the starters."""
+    earlier one's file, as 6.2.2 on 6.2.1's), and each wrong answer over the starters."""
     ids = list(checks.EXERCISES)
     exercises.setup(*ids, workspace=workspace, package='ex_starter')
-    exercises.setup(*ids, workspace=workspace, package='ex_solution')
-    for solved in ids:
-        exercises.use_solution(solved, force=True, workspace=workspace, package='ex_solution')
     for case in CASES:
         if case.kind == 'wrong' and case.exercise == exercise_id:
             exercises.setup(*ids, workspace=workspace, package=case.package)
@@ -138,7 +137,7 @@ def _on_one_worker(case: Case) -> object:
 
 @pytest.mark.timeout(900)
 @pytest.mark.parametrize('case', [_on_one_worker(case) for case in CASES])
-def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
+def test_check_fails_on_starter_and_wrong_answers(
         case: Case, exercise_workspaces: Callable[[str], Path], lesson_environment):
     workspace = exercise_workspaces(case.exercise)
     # This process watches nothing while the case runs: its observer would only
@@ -147,9 +146,6 @@ def test_check_fails_on_starter_and_wrong_answers_and_passes_on_solution(
     verdict = grading_process.grade(case.exercise, workspace, case.package)
     report = str(verdict)
     print(report)  # in the test log: what a student would read
-    if case.kind == 'solution':
-        assert verdict.passed, report
-        return
     assert not verdict.passed and verdict.problems, report
     for phrase in _expected_phrases(case) if case.kind == 'wrong' else []:
         assert phrase in report, f'the verdict should name {phrase!r}:\n{report}'
