@@ -1,4 +1,7 @@
-"""Command line: `python -m speccheck static|live SPEC [--launch PKG FILE | PATH] [n:=v ...]`.
+"""Command line: `speccheck static|live SPEC [--launch PKG FILE | PATH] [n:=v ...]`.
+
+The same as `python -m speccheck ...` (what labkit and the lessons run) and
+as the `speccheck` console command of the distribution (tools/speccheck).
 
 Exit codes: 0 every requirement met, 1 some requirement not met, 2 bad input.
 """
@@ -13,9 +16,9 @@ from speccheck.live_check import DEFAULT_WINDOW
 from speccheck.spec import SpecError, load_spec
 
 
-def build_parser() -> argparse.ArgumentParser:
+def build_parser(prog: str = 'python -m speccheck') -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
-        prog='python -m speccheck',
+        prog=prog,
         description='Check a ROS 2 launch file (static) or a running system (live) '
                     'against a spec file.')
     parser.add_argument('mode', choices=['static', 'live'],
@@ -34,8 +37,8 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def main(argv: Sequence[str] | None = None) -> int:
-    parser = build_parser()
+def main(argv: Sequence[str] | None = None, prog: str = 'python -m speccheck') -> int:
+    parser = build_parser(prog)
     options = parser.parse_intermixed_args(argv)
     try:
         spec = load_spec(options.spec)
@@ -58,6 +61,11 @@ def main(argv: Sequence[str] | None = None) -> int:
                                    timeout=options.timeout)
     print(report)
     return report.exit_code
+
+
+def console() -> None:
+    """The `speccheck` console command (pyproject's [project.scripts])."""
+    sys.exit(main(prog='speccheck'))
 
 
 if __name__ == '__main__':
