@@ -93,6 +93,16 @@ topics:
     assert evidence(report, 'topic /robot1/distance') == (
         'no node publishes or subscribes to /robot1/distance; topics with that base name: '
         '/distance')
+    # codes and spec lines of the JSON, JUnit and SARIF reports
+    assert {(f.requirement, f.code, f.line) for f in report.failures} == {
+        ('node /lidar', 'NodeMissing', 2),
+        ('node /sensor_publisher: parameter publish_rate', 'ParameterMismatch', 5),
+        ('node /sensor_publisher: parameter frame_id', 'ParameterMissing', 6),
+        ('topic /distance: type', 'TypeMismatch', 9),
+        ('topic /distance: publisher /data_processor', 'PublisherMissing', 10),
+        ('topic /distance: rate 10..inf Hz', 'RateMismatch', 11),
+        ('topic /robot1/distance', 'TopicMissing', 12),
+    }
 
 
 def wait_until_seen(topic, publishers, subscribers, timeout=10.0):
@@ -128,6 +138,7 @@ def test_incompatible_qos_is_found(mismatched_qos, write_spec):
     report = check_live(spec, window=WINDOW)
     assert statuses(report, 'topic /qos_probe: publisher /qos_talker') == [MET]
     assert statuses(report, 'topic /qos_probe: QoS') == [FAILED]
+    assert [f.code for f in report.find('topic /qos_probe: QoS')] == ['QoSMismatch']
     found = evidence(report, 'topic /qos_probe: QoS')
     assert found.startswith('publisher /qos_talker (best_effort, volatile) and subscriber '
                             '/qos_listener (reliable, volatile): ')

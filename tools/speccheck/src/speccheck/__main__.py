@@ -3,24 +3,39 @@
 The same as `python -m speccheck ...` (what labkit and the lessons run) and
 as the `speccheck` console command of the distribution (tools/speccheck).
 
-Exit codes: 0 every requirement met, 1 some requirement not met, 2 bad input.
+Exit codes (EXIT_CODES): 0 every requirement met, 1 some requirement not met,
+2 could not judge (a spec, launch file or argument it cannot use, or speccheck
+itself failed): CI can tell a broken system from a broken check.
 """
 from __future__ import annotations
 
 import argparse
 import sys
+import traceback
 from collections.abc import Sequence
+from pathlib import Path
 
 from speccheck.cli_targets import TargetError, find_launch_file, split_arguments
 from speccheck.live_check import DEFAULT_WINDOW
-from speccheck.spec import SpecError, load_spec
+from speccheck.report import Report
+from speccheck.spec import Spec, SpecError, load_spec
+
+#: exit code -> meaning (printed by --help; docs/reference/spec-files.md says the same)
+EXIT_CODES = {
+    0: 'met: every requirement met (some may be "not checked")',
+    1: 'not met: at least one requirement failed',
+    2: 'could not judge: the spec file, launch file or arguments cannot be used, '
+       'or speccheck itself failed',
+}
 
 
 def build_parser(prog: str = 'python -m speccheck') -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog=prog,
         description='Check a ROS 2 launch file (static) or a running system (live) '
-                    'against a spec file.')
+                    'against a spec file.',
+        epilog='exit codes: ' + '; '.join(f'{code} {meaning}'
+                                          for code, meaning in EXIT_CODES.items()))
     parser.add_argument('mode', choices=['static', 'live'],
                         help='static: read the launch file, start nothing; live: check the '
                              'running graph (after starting the launch file, if one is given)')
@@ -47,20 +62,30 @@ def main(argv: Sequence[str] | None = None, prog: str = 'python -m speccheck') -
     except (SpecError, TargetError) as error:
         print(f'speccheck: error: {error}', file=sys.stderr)
         return 2
-    if options.mode == 'static':
-        if launch_file is None:
-            print('speccheck: error: static needs a launch file: --launch PKG FILE or a path',
-                  file=sys.stderr)
-            return 2
-        from speccheck.static_check import check_static
-        report = check_static(spec, launch_file, arguments)
-    else:
-        from speccheck.live_run import check_launch_live
-        target = tuple(options.launch) if options.launch else launch_file
-        report = check_launch_live(spec, target, arguments, window=options.window,
-                                   timeout=options.timeout)
+    if options.mode == 'static' and launch_file is None:
+        print('speccheck: error: static needs a launch file: --launch PKG FILE or a path',
+              file=sys.stderr)
+        return 2
+    try:
+        report = _check(options, spec, launch_file, arguments)
+    except Exception as error:  # a crash must not look like a verdict (exit 1)
+        traceback.print_exc()
+        print(f'speccheck: error: could not judge: {type(error).__name__}: {error}',
+              file=sys.stderr)
+        return 2
     print(report)
     return report.exit_code
+
+
+def _check(options: argparse.Namespace, spec: Spec, launch_file: Path | None,
+           arguments: dict[str, str]) -> Report:
+    if options.mode == 'static':
+        from speccheck.static_check import check_static
+        return check_static(spec, launch_file, arguments)
+    from speccheck.live_run import check_launch_live
+    target = tuple(options.launch) if options.launch else launch_file
+    return check_launch_live(spec, target, arguments, window=options.window,
+                             timeout=options.timeout)
 
 
 def console() -> None:

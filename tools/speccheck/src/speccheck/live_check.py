@@ -12,8 +12,8 @@ import labkit
 from labkit import qos, rates
 from labkit.graph import GraphSnapshot
 
-from speccheck import values
-from speccheck.report import Finding, Report, Status
+from speccheck import codes, values
+from speccheck.report import Finding, Report, Status, located
 from speccheck.spec import NodeSpec, Spec, TopicSpec
 
 MET, FAILED, NOT_CHECKED = Status.MET, Status.FAILED, Status.NOT_CHECKED
@@ -40,11 +40,12 @@ def check_live(spec: Spec, window: float = DEFAULT_WINDOW, target: str = 'runnin
         others = sorted(set(snapshot.nodes) - {node.name for node in spec.nodes})
         if others:
             findings.append(Finding('other nodes', NOT_CHECKED,
-                                    f'running but not in the spec: {", ".join(others)}'))
+                                    f'running but not in the spec: {", ".join(others)}',
+                                    at=('nodes',)))
     measured = _measure(spec, snapshot, window)
     for topic in spec.topics:
         findings += _topic(topic, snapshot, measured)
-    return Report('live', spec.source, target, tuple(findings))
+    return Report('live', spec.source, target, located(findings, spec.lines))
 
 
 def _wait_for_spec(spec: Spec, grace: float) -> GraphSnapshot:
@@ -74,25 +75,30 @@ def _all_present(spec: Spec, snapshot: GraphSnapshot) -> bool:
 
 def _node(node_spec: NodeSpec, snapshot: GraphSnapshot) -> list[Finding]:
     requirement = f'node {node_spec.name}'
+    at = ('nodes', node_spec.name)
     if node_spec.name not in snapshot.nodes:
         return [Finding(requirement, FAILED,
-                        f'not running; running: {", ".join(snapshot.nodes) or "no nodes"}')]
-    findings = [Finding(requirement, MET, 'running')]
+                        f'not running; running: {", ".join(snapshot.nodes) or "no nodes"}',
+                        codes.NODE_MISSING, at)]
+    findings = [Finding(requirement, MET, 'running', at=at)]
     if node_spec.parameters is None:
         return findings
     try:
         actual = labkit.read_parameters(node_spec.name)
     except labkit.LabkitError as error:
-        return [*findings, Finding(f'{requirement}: parameters', FAILED, str(error))]
+        return [*findings, Finding(f'{requirement}: parameters', FAILED, str(error),
+                                   codes.PARAMETERS_UNREADABLE, (*at, 'parameters'))]
     for wanted in node_spec.parameters:
         name = f'{requirement}: parameter {wanted.name}'
+        where = (*at, 'parameters', wanted.name)
         if wanted.name not in actual:
             findings.append(Finding(name, FAILED, 'the node has no such parameter; it has: '
-                                    + ', '.join(sorted(actual))))
+                                    + ', '.join(sorted(actual)), codes.PARAMETER_MISSING, where))
             continue
         problem = values.judge(wanted, actual[wanted.name])
         findings.append(Finding(name, FAILED if problem else MET,
-                                problem or f'{values.show(actual[wanted.name])}'))
+                                problem or f'{values.show(actual[wanted.name])}',
+                                codes.PARAMETER_MISMATCH if problem else None, where))
     return findings
 
 
@@ -105,26 +111,31 @@ def _measure(spec: Spec, snapshot: GraphSnapshot, window: float) -> dict[str, ra
 def _topic(topic: TopicSpec, snapshot: GraphSnapshot,
            measured: dict[str, rates.Rate]) -> list[Finding]:
     requirement = f'topic {topic.name}'
+    at = ('topics', topic.name)
     found = snapshot.topics.get(topic.name)
     if found is None:
         return [Finding(requirement, FAILED,
                         f'no node publishes or subscribes to {topic.name}' + _similar(
-                            topic.name, snapshot))]
+                            topic.name, snapshot), codes.TOPIC_MISSING, at)]
     findings = []
     if topic.type is not None:
         ok = found.types == (topic.type,)
         findings.append(Finding(f'{requirement}: type', MET if ok else FAILED,
                                 found.type if ok else
-                                f'{found.type}, the spec says {topic.type}'))
+                                f'{found.type}, the spec says {topic.type}',
+                                None if ok else codes.TYPE_MISMATCH, (*at, 'type')))
     for role, names, actual in (('publisher', topic.publishers, found.publishers),
                                 ('subscriber', topic.subscribers, found.subscribers)):
-        for name in names:
+        code = codes.PUBLISHER_MISSING if role == 'publisher' else codes.SUBSCRIBER_MISSING
+        for index, name in enumerate(names):
             line = f'{requirement}: {role} {name}'
+            where = (*at, f'{role}s', index)
             if name in actual:
-                findings.append(Finding(line, MET, f'{name} {role_verb(role)} {topic.name}'))
+                findings.append(Finding(line, MET, f'{name} {role_verb(role)} {topic.name}',
+                                        at=where))
             else:
                 findings.append(Finding(line, FAILED, _missing_endpoint(
-                    topic.name, role, name, actual, snapshot)))
+                    topic.name, role, name, actual, snapshot), code, where))
     if topic.has_rate:
         findings.append(_rate(topic, measured.get(topic.name)))
     findings += _qos(topic.name)
@@ -155,14 +166,17 @@ def _rate(topic: TopicSpec, rate: rates.Rate | None) -> Finding:
     low = '0' if topic.rate_min is None else f'{topic.rate_min:g}'
     high = 'inf' if topic.rate_max is None else f'{topic.rate_max:g}'
     requirement = f'topic {topic.name}: rate {low}..{high} Hz'
+    at = ('topics', topic.name, 'rate')
     if rate is None or rate.hz is None:
         count = 0 if rate is None else rate.count
         window = '' if rate is None else f' in {rate.window:g} s'
-        return Finding(requirement, FAILED, f'{count} message(s){window}: no rate to measure')
+        return Finding(requirement, FAILED, f'{count} message(s){window}: no rate to measure',
+                       codes.RATE_MISMATCH, at)
     ok = ((topic.rate_min is None or rate.hz >= topic.rate_min)
           and (topic.rate_max is None or rate.hz <= topic.rate_max))
     return Finding(requirement, MET if ok else FAILED,
-                   f'measured {rate.hz:.2f} Hz ({rate.count} messages in {rate.window:g} s)')
+                   f'measured {rate.hz:.2f} Hz ({rate.count} messages in {rate.window:g} s)',
+                   None if ok else codes.RATE_MISMATCH, at)
 
 
 def _qos(topic: str) -> list[Finding]:
@@ -170,11 +184,13 @@ def _qos(topic: str) -> list[Finding]:
     if not publishers or not subscribers:
         return []
     requirement = f'topic {topic}: QoS'
+    at = ('topics', topic)
     problems = qos.mismatches(topic)
     if not problems:
         pairs = '; '.join(endpoint.describe() for endpoint in publishers + subscribers)
-        return [Finding(requirement, MET, f'every publisher/subscriber pair compatible: {pairs}')]
+        return [Finding(requirement, MET, f'every publisher/subscriber pair compatible: {pairs}',
+                        at=at)]
     return [Finding(requirement, FAILED if problem.error else NOT_CHECKED,
                     f'publisher {problem.publisher.describe()} and subscriber '
-                    f'{problem.subscriber.describe()}: {problem.reason}')
+                    f'{problem.subscriber.describe()}: {problem.reason}', codes.QOS_MISMATCH, at)
             for problem in problems]

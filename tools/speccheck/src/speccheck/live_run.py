@@ -5,8 +5,9 @@ from pathlib import Path
 
 import labkit
 
+from speccheck import codes
 from speccheck.live_check import DEFAULT_WINDOW, check_live
-from speccheck.report import Finding, Report, Status
+from speccheck.report import Finding, Report, Status, located
 from speccheck.spec import Spec
 
 
@@ -26,10 +27,10 @@ def check_launch_live(spec: Spec, launch_file: str | Path | tuple[str, str] | No
         try:
             run.wait_for_nodes([node.name for node in spec.nodes], timeout=timeout)
         except labkit.LabkitError as error:
-            return Report('live', spec.source, target,
-                          (Finding('launch', Status.FAILED, str(error)),))
+            return Report('live', spec.source, target, located(
+                [Finding('launch', Status.FAILED, str(error), codes.LAUNCH_FAILED)], spec.lines))
         report = check_live(spec, window, target)
         return Report('live', spec.source, target,
-                      (Finding('launch', Status.MET, f'`{run.command}` running'),
-                       *report.findings))
+                      (*located([Finding('launch', Status.MET, f'`{run.command}` running')],
+                                spec.lines), *report.findings))
 

@@ -6,8 +6,11 @@ and as a table in a notebook (`_repr_markdown_` / `_repr_html_`).
 from __future__ import annotations
 
 import html
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from enum import Enum
+
+from speccheck import codes
+from speccheck.yaml_lines import LineMap, line_of
 
 
 class Status(Enum):
@@ -22,14 +25,41 @@ _MARKS = {Status.MET: '✓', Status.FAILED: '✗', Status.NOT_CHECKED: '?'}
 
 @dataclass(frozen=True)
 class Finding:
-    """One requirement (e.g. `topic /distance: publisher /sensor_publisher`) and what was found."""
+    """One requirement (e.g. `topic /distance: publisher /sensor_publisher`) and what was found.
+
+    `code` (speccheck.codes) says what kind of requirement failed, `at` is the
+    spec's path of the requirement (('nodes', '/a') ...; () for the launch file
+    as a whole) and `line` its line in the spec file, filled in by
+    :func:`located`.  They appear in the JSON, JUnit and SARIF reports, never in
+    the text one, which lessons print.
+    """
 
     requirement: str
     status: Status
     evidence: str
+    code: str | None = None
+    at: tuple = ()
+    line: int | None = None
 
     def __str__(self) -> str:
         return f'{self.status.value:<11} {self.requirement}: {self.evidence}'
+
+    @property
+    def rule(self) -> str | None:
+        """The finding's code; NotChecked for an undecided one without its own."""
+        if self.code is None and self.status is Status.NOT_CHECKED:
+            return codes.NOT_CHECKED
+        return self.code
+
+    @property
+    def hint(self) -> str:
+        """One line on how to fix it ('' for a met requirement)."""
+        return codes.HINTS.get(self.rule, '') if self.status is not Status.MET else ''
+
+
+def located(findings: list[Finding], lines: LineMap) -> tuple[Finding, ...]:
+    """`findings` with the spec line of each one's `at` (the file's first line for ())."""
+    return tuple(replace(f, line=line_of(lines, f.at) or 1) for f in findings)
 
 
 @dataclass(frozen=True, repr=False)
@@ -52,6 +82,8 @@ class Report:
 
     @property
     def exit_code(self) -> int:
+        """0 every requirement met, 1 some requirement not met (2, could not judge, is
+        the command line's: a spec, launch file or argument it cannot use)."""
         return 0 if self.ok else 1
 
     def find(self, requirement: str) -> list[Finding]:

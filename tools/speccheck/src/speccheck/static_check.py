@@ -7,13 +7,14 @@ rule that decides it is reported as not checked statically.
 """
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 
 from rclhelpers.names import split_full_name
 
-from speccheck import values
+from speccheck import codes, values
 from speccheck.launch_walk import PlannedNode, StaticSystem, walk_launch_file
-from speccheck.report import Finding, Report, Status
+from speccheck.report import Finding, Report, Status, located
 from speccheck.spec import NodeSpec, Spec, TopicSpec
 from speccheck.workspace import find_executable
 
@@ -24,7 +25,7 @@ def check_static(spec: Spec, launch_file: str | Path,
                  arguments: dict[str, str] | None = None) -> Report:
     """Check `launch_file` (started with `arguments`) against `spec` without starting it."""
     system = walk_launch_file(launch_file, arguments)
-    findings = _findings(spec, system)
+    findings = located(_findings(spec, system), spec.lines)
     target = Path(launch_file).name + ''.join(f' {k}:={v}' for k, v in system.given.items())
     return Report('static', spec.source, target, tuple(findings))
 
@@ -33,9 +34,10 @@ def _findings(spec: Spec, system: StaticSystem) -> list[Finding]:
     if system.error is not None:
         return [Finding('launch file', FAILED,
                         f'{Path(system.launch_file).name} fails before starting anything: '
-                        f'{system.error}')]
+                        f'{system.error}', codes.LAUNCH_FAILED)]
     findings = [Finding('launch file', MET, _summary(system))]
-    findings += [Finding('launch file', FAILED, problem) for problem in system.problems]
+    findings += [Finding('launch file', FAILED, problem, codes.LAUNCH_FAILED)
+                 for problem in system.problems]
     findings += _given_arguments(system)
     findings += _arguments(spec, system)
     matched = _match_nodes(spec, system, findings)
@@ -45,7 +47,7 @@ def _findings(spec: Spec, system: StaticSystem) -> list[Finding]:
             findings += _parameters(node_spec, matched[node_spec.name])
     for topic in spec.topics:
         findings += _wiring(topic, system, matched)
-    findings += [Finding(f'node {node.label}', NOT_CHECKED, note)
+    findings += [Finding(f'node {node.label}', NOT_CHECKED, note, at=_node_at(node))
                  for node in system.nodes for note in node.notes]
     findings += [Finding('launch file', NOT_CHECKED, item) for item in system.not_checked]
     return findings
@@ -63,7 +65,8 @@ def _given_arguments(system: StaticSystem) -> list[Finding]:
     declared = {argument.name for argument in system.all_arguments}
     return [Finding(f'argument {name}', FAILED,
                     f'given as {name}:={value} but no launch file declares {name!r}, so it '
-                    'changes nothing; declared: ' + (', '.join(sorted(declared)) or 'none'))
+                    'changes nothing; declared: ' + (', '.join(sorted(declared)) or 'none'),
+                    codes.UNEXPECTED_ARGUMENT)
             for name, value in system.given.items() if name not in declared]
 
 
@@ -72,10 +75,12 @@ def _arguments(spec: Spec, system: StaticSystem) -> list[Finding]:
     findings = []
     for wanted in spec.arguments:
         requirement = f'argument {wanted.name}'
+        at = ('arguments', wanted.name)
         found = declared.get(wanted.name)
         if found is None:
             findings.append(Finding(requirement, FAILED, 'not declared; the launch file '
-                                    f'declares: {", ".join(declared) or "no arguments"}'))
+                                    f'declares: {", ".join(declared) or "no arguments"}',
+                                    codes.ARGUMENT_MISSING, at))
             continue
         problems = []
         if wanted.required and found.default is not None:
@@ -89,11 +94,12 @@ def _arguments(spec: Spec, system: StaticSystem) -> list[Finding]:
             problems.append(f'choices {list(found.choices) if found.choices else "not set"}, '
                             f'the spec says {list(wanted.choices)}')
         if problems:
-            findings.append(Finding(requirement, FAILED, '; '.join(problems)))
+            findings.append(Finding(requirement, FAILED, '; '.join(problems),
+                                    codes.ARGUMENT_MISMATCH, at))
         else:
             default = 'no default' if found.default is None else f'default {found.default!r}'
             choices = f', choices {list(found.choices)}' if found.choices else ''
-            findings.append(Finding(requirement, MET, f'declared, {default}{choices}'))
+            findings.append(Finding(requirement, MET, f'declared, {default}{choices}', at=at))
     return findings
 
 
@@ -105,10 +111,12 @@ def _match_nodes(spec: Spec, system: StaticSystem,
     unnamed_used: set[int] = set()
     for node_spec in spec.nodes:
         requirement = f'node {node_spec.name}'
+        at = ('nodes', node_spec.name)
         named = [node for node in system.nodes if node.full_name == node_spec.name]
         if len(named) > 1:
             findings.append(Finding(requirement, FAILED, f'started {len(named)} times: two '
-                                    'nodes with one name confuse parameters and services'))
+                                    'nodes with one name confuse parameters and services',
+                                    codes.DUPLICATE_NODE, at))
         if named:
             matched[node_spec.name] = named[0]
             findings.append(_identity(node_spec, named[0]))
@@ -121,16 +129,18 @@ def _match_nodes(spec: Spec, system: StaticSystem,
                                     f'{candidate.package}/{candidate.executable} is started in '
                                     f'{candidate.namespace} without a name, so the program picks '
                                     'the node name; taken as this node, name not checked '
-                                    'statically'))
+                                    'statically', at=at))
             continue
-        findings.append(Finding(requirement, FAILED, _missing_node_evidence(node_spec, system)))
+        findings.append(Finding(requirement, FAILED, _missing_node_evidence(node_spec, system),
+                                codes.NODE_MISSING, at))
     if spec.nodes:
         wanted = {node.name for node in spec.nodes}
         for node in system.nodes:
             if node.full_name is not None and node.full_name not in wanted:
                 findings.append(Finding(f'node {node.full_name}', FAILED,
                                         f'started by {Path(node.launch_file).name} '
-                                        f'({node.package}/{node.executable}) but not in the spec'))
+                                        f'({node.package}/{node.executable}) but not in the spec',
+                                        codes.UNEXPECTED_NODE, ('nodes',)))
     return matched
 
 
@@ -145,9 +155,11 @@ def _identity(node_spec: NodeSpec, node: PlannedNode) -> Finding:
                 f'{node.executable}')
     if node.remaps:
         evidence += ', remaps ' + ', '.join(f'{s}:={d}' for s, d in node.remaps)
+    at = ('nodes', node_spec.name)
     if problems:
-        return Finding(f'node {node_spec.name}', FAILED, f'{evidence}; ' + '; '.join(problems))
-    return Finding(f'node {node_spec.name}', MET, evidence)
+        return Finding(f'node {node_spec.name}', FAILED, f'{evidence}; ' + '; '.join(problems),
+                       codes.NODE_MISMATCH, at)
+    return Finding(f'node {node_spec.name}', MET, evidence, at=at)
 
 
 def _unnamed_candidate(node_spec: NodeSpec, system: StaticSystem,
@@ -180,7 +192,8 @@ def _executables(system: StaticSystem) -> list[Finding]:
     for node in system.nodes:
         found, evidence = find_executable(node.package, node.executable)
         findings.append(Finding(f'executable of {node.label}', MET if found else FAILED,
-                                evidence))
+                                evidence, None if found else codes.EXECUTABLE_MISSING,
+                                _node_at(node)))
     return findings
 
 
@@ -191,25 +204,33 @@ def _parameters(node_spec: NodeSpec, node: PlannedNode) -> list[Finding]:
     findings = []
     for wanted in node_spec.parameters:
         requirement = f'node {node_spec.name}: parameter {wanted.name}'
+        at = ('nodes', node_spec.name, 'parameters', wanted.name)
         setting = given.get(wanted.name)
         if setting is None:
             findings.append(Finding(requirement, NOT_CHECKED,
                                     "not set by the launch file, so the node's own default "
                                     f'applies (the running check reads it); spec: '
-                                    f'{values.expectation(wanted)}'))
+                                    f'{values.expectation(wanted)}', at=at))
             continue
         problem = values.judge(wanted, setting.value)
         findings.append(Finding(
             requirement, FAILED if problem else MET,
-            f'{problem or "set to " + values.show(setting.value)} (from {setting.origin})'))
+            f'{problem or "set to " + values.show(setting.value)} (from {setting.origin})',
+            codes.PARAMETER_MISMATCH if problem else None, at))
     known = {wanted.name for wanted in node_spec.parameters}
     for name, setting in given.items():
         if setting.targeted and name not in known:
             findings.append(Finding(
                 f'node {node_spec.name}: parameter {name}', FAILED,
                 f'set to {values.show(setting.value)} by {setting.origin} but not in the spec: '
-                'a misspelt name, or one the node does not declare (it would be ignored)'))
+                'a misspelt name, or one the node does not declare (it would be ignored)',
+                codes.UNEXPECTED_PARAMETER, ('nodes', node_spec.name, 'parameters')))
     return findings
+
+
+def _node_at(node: PlannedNode) -> tuple:
+    """The spec path of a node the launch file starts (('nodes', name), or () unnamed)."""
+    return ('nodes', node.full_name) if node.full_name else ()
 
 
 def resolve(name: str, node: PlannedNode) -> str:
@@ -228,16 +249,20 @@ def _wiring(topic: TopicSpec, system: StaticSystem,
     `_match_nodes` paired with the spec node (also an unnamed one), else by name."""
     findings = []
     for role, names in (('publisher', topic.publishers), ('subscriber', topic.subscribers)):
-        for name in names:
+        code = codes.PUBLISHER_MISSING if role == 'publisher' else codes.SUBSCRIBER_MISSING
+        for index, name in enumerate(names):
             requirement = f'topic {topic.name}: {role} {name}'
+            at = ('topics', topic.name, f'{role}s', index)
             nodes = [matched[name]] if name in matched else [
                 node for node in system.nodes if node.full_name == name]
             if not nodes:
                 findings.append(Finding(requirement, FAILED,
                                         f'expected {role} {name}, but the launch file starts '
-                                        'no node of that name'))
+                                        'no node of that name', code, at))
                 continue
-            findings.append(_endpoint(requirement, topic.name, nodes[0]))
+            finding = _endpoint(requirement, topic.name, nodes[0])
+            findings.append(replace(finding, code=code if finding.status is FAILED else None,
+                                    at=at))
     return findings
 
 
