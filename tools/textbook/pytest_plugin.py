@@ -4,20 +4,28 @@ Each test process (every xdist worker, or the single process without
 xdist) leases a ROS domain at start and exports it, so everything the tests
 start inherits a private domain and localhost-only discovery.  At the end,
 any process still carrying the session's lease token is killed and the
-session fails, naming it.  Loaded by ``python -m textbook test`` (-p) and by
-tests/conftest.py.
+session fails, naming it.  Every session also records how long each test
+took (setup, call and teardown) in build/test-times.json, which
+tools/bench/ci_time.py sums by tier and folder.  Loaded by ``python -m
+textbook test`` (-p) and by tests/conftest.py.
 """
 from __future__ import annotations
 
+import json
 import os
+from collections import defaultdict
 from pathlib import Path
 
 import pytest
 
-from . import reaper
+from . import paths, reaper
 from .isolation import DomainLease, acquire_domain
 
 _lease: DomainLease | None = None
+#: nodeid -> seconds, collected where reports arrive (the xdist controller, or the
+#: only process); written at the end of the session.
+_durations: dict[str, float] = defaultdict(float)
+TEST_TIMES = paths.BUILD / 'test-times.json'
 
 #: Tier of every test below a folder (relative to the repository root).
 FOLDER_TIERS = {'tests/site': 'site', 'tests/lessons': 'lesson', 'tests/exercises': 'exercise',
@@ -57,6 +65,17 @@ def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
     for item in items:
         if not any(item.get_closest_marker(tier) for tier in TIERS):
             item.add_marker(tier_of(item.path, set(getattr(item, 'fixturenames', ()))))
+
+
+def pytest_runtest_logreport(report: pytest.TestReport) -> None:
+    _durations[report.nodeid] += report.duration
+
+
+def pytest_sessionfinish(session: pytest.Session) -> None:
+    if hasattr(session.config, 'workerinput') or not _durations:
+        return  # a worker: its reports reach the controller, which writes the file
+    TEST_TIMES.parent.mkdir(parents=True, exist_ok=True)
+    TEST_TIMES.write_text(json.dumps(dict(sorted(_durations.items())), indent=0) + '\n')
 
 
 def pytest_unconfigure(config: pytest.Config) -> None:
