@@ -19,7 +19,6 @@ and wrong answers are picked up from labkit.checks and
 from __future__ import annotations
 
 import os
-import re
 import subprocess
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -27,12 +26,10 @@ from pathlib import Path
 
 import pytest
 from labkit import checks, exercises, observer
-from labkit.grading.student_package import StudentPackage
+from labkit.grading.student_package import PACKAGE, StudentPackage
 from textbook import paths, workspace
 
 from . import _grading_process as grading_process
-
-VERDICT_NAMES = re.compile(r'^# Verdict names: (.+)$', re.MULTILINE)
 
 
 @dataclass(frozen=True)
@@ -59,8 +56,7 @@ CASES = _cases()
 
 
 def _expected_phrases(case: Case) -> list[str]:
-    files = checks.find(case.exercise).wrong_answers()[case.name].values()
-    return [phrase.strip() for f in files for phrase in VERDICT_NAMES.findall(f.read_text())]
+    return list(checks.find(case.exercise).wrong_answer_patches()[case.name].verdict_names)
 
 
 @pytest.fixture(scope='module')
@@ -113,9 +109,10 @@ def _build_cases(workspace: Path, exercise_id: str, underlay: dict[str, str]) ->
         if case.kind == 'wrong' and case.exercise == exercise_id:
             exercises.setup(*ids, workspace=workspace, package=case.package)
             answer = checks.find(exercise_id).wrong_answers()[case.name]
-            for relative, source in answer.items():  # named for its package, like the rest
-                exercises.copy_for_package(source, workspace / 'src' / case.package / relative,
-                                           case.package)
+            for relative, text in answer.items():  # named for its package, like the rest
+                target = workspace / 'src' / case.package / relative
+                target.parent.mkdir(parents=True, exist_ok=True)
+                target.write_text(text.replace(PACKAGE, case.package))
     _colcon_build(workspace, underlay)
     return workspace
 

@@ -6,6 +6,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from labkit.grading import wrong_answers
 from labkit.grading.student_package import PACKAGE, StudentPackage
 from labkit.grading.verdict import Verdict
 from labkit.workspace import book_snippets
@@ -29,7 +30,8 @@ class Exercise:
     """`files` are paths inside the student's package (e.g. 'launch/x.launch.py');
     the starter of each is `snippets/starters/my_ws_exercises/<file>`, the
     solution `snippets/<solutions>/<file>`, and the wrong answers live in
-    `snippets/<solutions>/wrong/<id>/` (see :meth:`wrong_answers`)."""
+    `snippets/<solutions>/wrong/<id>/<name>.patch`, patches against the solution
+    (see :meth:`wrong_answers` and labkit.grading.wrong_answers)."""
 
     id: str
     title: str
@@ -47,28 +49,28 @@ class Exercise:
     def solution(self, relative: str) -> Path:
         return SNIPPETS / self.solutions / relative
 
-    def wrong_answers(self) -> dict[str, dict[str, Path]]:
-        """name -> {file of the exercise: the wrong version of it}.
-
-        A file `wrong/<id>/<name>.<suffix>` replaces the exercise's file with
-        that suffix (one-file exercises); a folder `wrong/<id>/<name>/` holds
-        wrong versions of several files at their paths inside the package.
-        """
+    def wrong_answer_patches(self) -> dict[str, wrong_answers.WrongAnswer]:
+        """name -> the parsed patch `wrong/<id>/<name>.patch` (its Mistake and
+        Verdict names lines, its diff against the solution)."""
         folder = SNIPPETS / self.solutions / 'wrong' / self.id
-        answers: dict[str, dict[str, Path]] = {}
+        patches: dict[str, wrong_answers.WrongAnswer] = {}
         for entry in sorted(folder.iterdir()) if folder.is_dir() else []:
-            if entry.is_dir():
-                answers[entry.name] = {str(f.relative_to(entry)): f
-                                       for f in sorted(entry.rglob('*')) if f.is_file()}
-                continue
-            target = next((f for f in self.files if Path(f).name.endswith(_suffix(entry))), None)
-            if target is None:
-                raise ValueError(f'{entry}: no file of exercise {self.id} ends in '
-                                 f'{_suffix(entry)!r} ({", ".join(self.files)})')
-            answers[entry.name.removesuffix(_suffix(entry))] = {target: entry}
-        return answers
+            if entry.suffix != '.patch':
+                raise ValueError(f'{entry}: a wrong answer is a <name>.patch against the solution '
+                                 f'(see EXERCISES.md)')
+            patches[entry.stem] = wrong_answers.read(entry)
+        return patches
 
+    def wrong_answers(self) -> dict[str, dict[str, str]]:
+        """name -> {file inside the package: its text in this wrong answer}.
 
-def _suffix(path: Path) -> str:
-    """'.launch.py' for 'x.launch.py', '.yaml' for 'x.yaml'."""
-    return ''.join(path.suffixes)
+        A wrong answer is the solution with its patch applied: every file of
+        the exercise (the solution's, or patched), and any other file the
+        patch changes or creates.  A patch that no longer applies to the
+        solution raises wrong_answers.PatchError naming the patch and its line.
+        """
+        def solution(relative: str) -> str:
+            return self.solution(relative).read_text()
+
+        return {name: {**{f: solution(f) for f in self.files}, **patch.apply(solution)}
+                for name, patch in self.wrong_answer_patches().items()}

@@ -17,17 +17,13 @@ longer matches the solution raises PatchError naming the patch file and
 the line of its hunk, so a solution that changed under a wrong answer fails
 loudly instead of grading something else.
 
-Make a patch from an edited copy of the solutions package::
-
-    python -m labkit.grading.wrong_answers make COPY snippets/ch06_solutions/wrong/ID/NAME.patch \\
-        --mistake '...' --verdict-names '...'
+`make` writes one from an edited copy of the solutions package (the command:
+labkit.grading.make_wrong_answer).
 """
 from __future__ import annotations
 
-import argparse
 import difflib
 import re
-import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -229,34 +225,3 @@ def make(solutions: Path, edited: Path, mistake: str, verdict_names: Sequence[st
     if not any(parts):
         raise PatchError(f'{edited}: no file differs from {solutions}')
     return header(mistake, verdict_names) + ''.join(parts)
-
-
-def main(argv: Sequence[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog='python -m labkit.grading.wrong_answers')
-    commands = parser.add_subparsers(dest='command', required=True)
-    command = commands.add_parser(
-        'make', help='write a wrong answer: an edited copy of the solutions package, as a '
-                     'patch against it')
-    command.add_argument('edited', type=Path,
-                         help='a copy of snippets/<solutions>/ with the mistake made in it')
-    command.add_argument('patch', type=Path,
-                         help='snippets/<solutions>/wrong/<exercise id>/<name>.patch')
-    command.add_argument('--mistake', required=True, help='which mistake it plays')
-    command.add_argument('--verdict-names', required=True, action='append',
-                         help="a phrase the check's verdict must contain (may repeat)")
-    args = parser.parse_args(argv)
-    if args.patch.suffix != '.patch' or args.patch.parent.parent.name != 'wrong':
-        parser.error(f'{args.patch}: expected '
-                     'snippets/<solutions>/wrong/<exercise id>/<name>.patch')
-    solutions = args.patch.parent.parent.parent
-    text = make(solutions, args.edited, args.mistake, args.verdict_names)
-    args.patch.parent.mkdir(parents=True, exist_ok=True)
-    args.patch.write_text(text)
-    answer = read(args.patch)  # and check that it applies
-    answer.apply(lambda relative: (solutions / relative).read_text())
-    print(f'{args.patch}: {", ".join(f.path for f in answer.files)}')
-    return 0
-
-
-if __name__ == '__main__':
-    sys.exit(main())
