@@ -15,9 +15,10 @@ have.  Two checks compare it with reality:
         run.wait_for_nodes(['/sensor_publisher'])
         speccheck.check_live(spec, window=3.0)
 
-From a shell: ``python -m speccheck static|live SPEC [--launch PKG FILE | PATH]
-[name:=value ...]``; exit code 1 when a requirement is not met, 2 for bad
-input (spec file, launch file, arguments).
+From a shell: ``speccheck static|live SPEC [--launch PKG FILE | PATH]
+[name:=value ...] [--format text|json|junit|sarif]`` (or ``python -m
+speccheck``); exit code 0 met, 1 a requirement not met, 2 could not judge
+(spec file, launch file, arguments, or a crash).
 """
 from speccheck.live_check import check_live
 from speccheck.report import Finding, Report, Status

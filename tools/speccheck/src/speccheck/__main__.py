@@ -1,4 +1,5 @@
-"""Command line: `speccheck static|live SPEC [--launch PKG FILE | PATH] [n:=v ...]`.
+"""Command line: `speccheck static|live SPEC [--launch PKG FILE | PATH] [n:=v ...]
+[--format text|json|junit|sarif]`.
 
 The same as `python -m speccheck ...` (what labkit and the lessons run) and
 as the `speccheck` console command of the distribution (tools/speccheck).
@@ -16,6 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from speccheck.cli_targets import TargetError, find_launch_file, split_arguments
+from speccheck.formats import FORMATS, render
 from speccheck.live_check import DEFAULT_WINDOW
 from speccheck.report import Report
 from speccheck.spec import Spec, SpecError, load_spec
@@ -47,6 +49,11 @@ def build_parser(prog: str = 'python -m speccheck') -> argparse.ArgumentParser:
     parser.add_argument('--timeout', type=float, default=20.0,
                         help="seconds to wait for the spec's nodes after starting a launch "
                              '(live; default 20)')
+    parser.add_argument('--format', choices=FORMATS, default='text',
+                        help='text (default: one line per requirement), json, junit (JUnit XML, '
+                             'a testcase per requirement) or sarif (SARIF 2.1.0, results on the '
+                             "spec file's lines, for GitHub code scanning); on exit code 2 "
+                             'nothing is printed on stdout')
     parser.add_argument('rest', nargs='*', metavar='PATH | name:=value',
                         help='a launch file path (instead of --launch), then launch arguments')
     return parser
@@ -73,7 +80,7 @@ def main(argv: Sequence[str] | None = None, prog: str = 'python -m speccheck') -
         print(f'speccheck: error: could not judge: {type(error).__name__}: {error}',
               file=sys.stderr)
         return 2
-    print(report)
+    print(render(report, options.format))
     return report.exit_code
 
 

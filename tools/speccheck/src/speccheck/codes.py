@@ -56,3 +56,27 @@ HINTS: dict[str, str] = {
     LAUNCH_FAILED: 'run the launch file with `ros2 launch` to see its error, and fix that first',
     NOT_CHECKED: 'check it with `speccheck live`, or in a launch test',
 }
+
+#: code -> which requirement was not met (SARIF rule descriptions; the reference page's table)
+SUMMARIES: dict[str, str] = {
+    NODE_MISSING: 'A node of the spec is not started (static) or not running (live)',
+    UNEXPECTED_NODE: 'The launch file starts a named node the spec does not list',
+    DUPLICATE_NODE: 'Two Node actions start nodes of one name',
+    NODE_MISMATCH: 'The node is started from another package or executable',
+    EXECUTABLE_MISSING: 'The package or executable is not in the sourced workspace',
+    TOPIC_MISSING: 'No node publishes or subscribes to a topic of the spec',
+    PUBLISHER_MISSING: 'A node that must publish to a topic does not',
+    SUBSCRIBER_MISSING: 'A node that must subscribe to a topic does not',
+    TYPE_MISMATCH: "A topic has another message type than the spec's",
+    RATE_MISMATCH: "The measured rate is outside the spec's bounds, or no message came",
+    QOS_MISMATCH: 'A publisher and a subscriber of a topic have incompatible QoS',
+    PARAMETER_MISSING: 'The running node has no parameter of that name',
+    PARAMETER_MISMATCH: "A parameter's type or value differs from the spec's",
+    UNEXPECTED_PARAMETER: 'The launch file sets a parameter the spec does not list',
+    PARAMETERS_UNREADABLE: "The node's parameters could not be read",
+    ARGUMENT_MISSING: 'The launch file does not declare an argument of the spec',
+    ARGUMENT_MISMATCH: "A launch argument's default, required-ness or choices differ",
+    UNEXPECTED_ARGUMENT: 'An argument given on the command line is declared nowhere',
+    LAUNCH_FAILED: 'The launch file fails, or its nodes did not appear in time',
+    NOT_CHECKED: 'A requirement this check cannot decide',
+}
