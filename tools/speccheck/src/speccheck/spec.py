@@ -19,8 +19,8 @@ Format (all sections optional; docs/reference/spec-files.md has the details)::
       sim_mode: {default: 'true', choices: ['true', 'false']}
       robot_ns: {required: true}         # declared without a default
 
-The file is validated against :data:`speccheck.schema.SPEC_SCHEMA`; any
-error names the file and line.
+The file is validated against :data:`speccheck.schema.SPEC_SCHEMA` (the file
+spec.schema.json); any error names the file and line.
 """
 from __future__ import annotations
 
