@@ -1,5 +1,6 @@
 """Command line: `speccheck static|live SPEC [--launch PKG FILE | PATH] [n:=v ...]
-[--format text|json|junit|sarif]`.
+[--format text|json|junit|sarif]`, and `speccheck snapshot OUT [--launch PKG FILE |
+PATH] [n:=v ...]`, which writes a spec from the running graph.
 
 The same as `python -m speccheck ...` (what labkit and the lessons run) and
 as the `speccheck` console command of the distribution (tools/speccheck).
@@ -38,17 +39,21 @@ def build_parser(prog: str = 'python -m speccheck') -> argparse.ArgumentParser:
                     'against a spec file.',
         epilog='exit codes: ' + '; '.join(f'{code} {meaning}'
                                           for code, meaning in EXIT_CODES.items()))
-    parser.add_argument('mode', choices=['static', 'live'],
+    parser.add_argument('mode', choices=['static', 'live', 'snapshot'],
                         help='static: read the launch file, start nothing; live: check the '
-                             'running graph (after starting the launch file, if one is given)')
-    parser.add_argument('spec', help='the spec file (YAML)')
+                             'running graph (after starting the launch file, if one is '
+                             'given); snapshot: write SPEC from the running graph (after '
+                             'starting the launch file and waiting for its graph to settle, '
+                             'if one is given)')
+    parser.add_argument('spec', help='the spec file (YAML); for snapshot the file to write, '
+                                     '- for stdout')
     parser.add_argument('--launch', nargs=2, metavar=('PKG', 'FILE'),
                         help='a launch file installed in a package, as `ros2 launch PKG FILE`')
     parser.add_argument('--window', type=float, default=DEFAULT_WINDOW,
                         help=f'seconds to measure topic rates (live; default {DEFAULT_WINDOW:g})')
     parser.add_argument('--timeout', type=float, default=20.0,
-                        help="seconds to wait for the spec's nodes after starting a launch "
-                             '(live; default 20)')
+                        help="seconds to wait for the spec's nodes (live) or for the graph "
+                             'to settle (snapshot) after starting a launch (default 20)')
     parser.add_argument('--format', choices=FORMATS, default='text',
                         help='text (default: one line per requirement), json, junit (JUnit XML, '
                              'a testcase per requirement) or sarif (SARIF 2.1.0, results on the '
@@ -62,6 +67,8 @@ def build_parser(prog: str = 'python -m speccheck') -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None, prog: str = 'python -m speccheck') -> int:
     parser = build_parser(prog)
     options = parser.parse_intermixed_args(argv)
+    if options.mode == 'snapshot':
+        return _snapshot(options)
     try:
         spec = load_spec(options.spec)
         path_words, arguments = split_arguments(options.rest)
@@ -82,6 +89,34 @@ def main(argv: Sequence[str] | None = None, prog: str = 'python -m speccheck') -
         return 2
     print(render(report, options.format))
     return report.exit_code
+
+
+def _snapshot(options: argparse.Namespace) -> int:
+    """Write the spec of the running system (0), or say why not (2)."""
+    try:
+        path_words, arguments = split_arguments(options.rest)
+        launch_file = find_launch_file(options.launch, path_words)
+    except TargetError as error:
+        print(f'speccheck: error: {error}', file=sys.stderr)
+        return 2
+    from speccheck.snapshot import SnapshotError, snapshot_launch, to_yaml
+    target = tuple(options.launch) if options.launch else launch_file
+    try:
+        text = to_yaml(*snapshot_launch(target, arguments, timeout=options.timeout))
+    except SnapshotError as error:
+        print(f'speccheck: error: {error}', file=sys.stderr)
+        return 2
+    except Exception as error:  # as for a check: a crash is not a result
+        traceback.print_exc()
+        print(f'speccheck: error: no snapshot: {type(error).__name__}: {error}',
+              file=sys.stderr)
+        return 2
+    if options.spec == '-':
+        sys.stdout.write(text)
+    else:
+        Path(options.spec).write_text(text, encoding='utf-8')
+        print(f'speccheck snapshot: wrote {options.spec}', file=sys.stderr)
+    return 0
 
 
 def _check(options: argparse.Namespace, spec: Spec, launch_file: Path | None,

@@ -6,18 +6,21 @@ running node are judged the same way.
 from __future__ import annotations
 
 import math
+from array import array
 from typing import Any
 
 from speccheck.spec import ParameterSpec
 
 _SCALARS = ((bool, 'bool'), (int, 'integer'), (float, 'double'), (str, 'string'))
+#: Array parameter values: lists, and array.array as rclpy may give numeric arrays.
+_SEQUENCES = (list, tuple, array)
 
 
 def ros_type(value: Any) -> str | None:
     """The ROS parameter type a Python value becomes (None for unset / unknown)."""
     if isinstance(value, (bytes, bytearray)):
         return 'byte_array'
-    if isinstance(value, (list, tuple)):
+    if isinstance(value, _SEQUENCES):
         kinds = {ros_type(item) for item in value}
         if len(kinds) == 1 and None not in kinds and '_array' not in next(iter(kinds)):
             return f'{kinds.pop()}_array'
@@ -64,6 +67,6 @@ def _equal(actual: Any, wanted: Any) -> bool:
             return math.isclose(float(actual), float(wanted), rel_tol=1e-9, abs_tol=1e-12)
         except (TypeError, ValueError):
             return False
-    if isinstance(actual, (list, tuple)) and isinstance(wanted, (list, tuple)):
+    if isinstance(actual, _SEQUENCES) and isinstance(wanted, _SEQUENCES):
         return len(actual) == len(wanted) and all(map(_equal, actual, wanted))
     return actual == wanted
