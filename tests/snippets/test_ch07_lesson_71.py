@@ -63,13 +63,15 @@ def test_static_check_sees_the_arguments_and_turtlesim_but_no_robot(ros_env):
         [sys.executable, '-m', 'speccheck', 'static', str(SPEC), '--launch', PACKAGE, LAUNCH],
         env=ros_env, capture_output=True, text=True, timeout=120, check=False)
     report = done.stdout + done.stderr
-    assert done.returncode == 1, report
+    assert done.returncode == 0, report  # nothing failed: what it cannot see is not judged
     met = [line.strip() for line in done.stdout.splitlines() if line.startswith('  met')]
     for expected in ("argument sim: declared, default 'true'",
                      "argument robot_count: declared, default '2'",
                      'node /turtlesim: started by sim.launch.py as turtlesim/turtlesim_node'):
         assert any(expected in line for line in met), f'{expected!r} not met in\n{report}'
-    unseen = [line for line in done.stdout.splitlines() if 'no Node action starts it' in line]
+    unseen = [line for line in done.stdout.splitlines()
+              if line.startswith('  not checked node ')
+              and 'no Node action the static check can see starts it' in line]
     robot_nodes = [node.name for node in spec.nodes if node.name != '/turtlesim']
     assert len(unseen) == len(robot_nodes) == 12, report
     assert all(any(f'node {name}:' in line for line in unseen) for name in robot_nodes), report

@@ -118,11 +118,13 @@ def test_static_check_sees_nothing_of_the_draft_and_turtlesim_in_the_books_file(
                  "argument robot_count: declared, default '2'")
     draft = _static(SPEC, DRAFT.name, ros_env)
     book = _static(SPEC, BOOK, ros_env)
-    assert draft.returncode == 1 and book.returncode == 1, draft.stdout + book.stdout
+    # nothing fails: the robots (and in the draft turtlesim too) are not judged
+    assert draft.returncode == 0 and book.returncode == 0, draft.stdout + book.stdout
     draft_met, book_met = _met(draft.stdout), _met(book.stdout)
     assert all(any(a in line for line in draft_met) for a in arguments), draft.stdout
     assert all(any(a in line for line in book_met) for a in arguments), book.stdout
-    assert 'launch file: would start no nodes' in draft_met, draft.stdout
+    assert ('  not checked launch file: would start no nodes that the static check can see; '
+            f'OpaqueFunction in {DRAFT.name} may start them') in draft.stdout, draft.stdout
     assert not [line for line in draft_met if line.startswith('node ')], draft.stdout
     assert f'OpaqueFunction in {DRAFT.name}' in draft.stdout, draft.stdout
     assert any(line.startswith('node /turtlesim: started by sim.launch.py') for line in book_met)

@@ -131,6 +131,8 @@ class StaticSystem:
     top_arguments: list[DeclaredArgument] = field(default_factory=list)
     all_arguments: list[DeclaredArgument] = field(default_factory=list)
     not_checked: list[str] = field(default_factory=list)
+    #: the parts that may start nodes the walk cannot see (e.g. 'OpaqueFunction in x.launch.py')
+    hidden: list[str] = field(default_factory=list)
     problems: list[str] = field(default_factory=list)
     error: str | None = None
 
@@ -189,6 +191,8 @@ class _Walker:
             return
         self.system.not_checked.append(f'{_kind(entity)} in {Path(launch_file).name}: '
                                        f'{_what_it_hides(entity)}')
+        if _kind(entity) in MAY_START_NODES or isinstance(entity, launch.actions.ExecuteProcess):
+            self.system.hidden.append(f'{_kind(entity)} in {Path(launch_file).name}')
 
     def _condition_holds(self, entity: Any) -> bool:
         condition = getattr(entity, 'condition', None)
@@ -400,6 +404,10 @@ def _described(value: Any) -> str:
                        for sub in normalize_to_list_of_substitutions(value))
     except Exception:  # noqa: BLE001 - only a label
         return str(value)
+
+
+#: Actions whose effect the walk cannot see and which may start nodes (a process may be one).
+MAY_START_NODES = ('OpaqueFunction', 'OpaqueCoroutine', 'RegisterEventHandler', 'TimerAction')
 
 
 def _what_it_hides(entity: Any) -> str:

@@ -3,7 +3,10 @@
 Nothing is started: see launch_walk for how the launch file is read.  The
 topic wiring can only be judged from remappings here (which names a
 program uses is known when it runs), so a topic endpoint without a remap
-rule that decides it is reported as not checked statically.
+rule that decides it is reported as not checked statically.  Likewise a
+spec node that no visible Node action starts is not checked (never failed)
+when the launch file has parts that may start nodes unseen (an
+OpaqueFunction, an event handler, a TimerAction, a plain process).
 """
 from __future__ import annotations
 
@@ -35,7 +38,7 @@ def _findings(spec: Spec, system: StaticSystem) -> list[Finding]:
         return [Finding('launch file', FAILED,
                         f'{Path(system.launch_file).name} fails before starting anything: '
                         f'{system.error}', codes.LAUNCH_FAILED)]
-    findings = [Finding('launch file', MET, _summary(system))]
+    findings = [_started(spec, system)]
     findings += [Finding('launch file', FAILED, problem, codes.LAUNCH_FAILED)
                  for problem in system.problems]
     findings += _given_arguments(system)
@@ -53,12 +56,34 @@ def _findings(spec: Spec, system: StaticSystem) -> list[Finding]:
     return findings
 
 
+def _started(spec: Spec, system: StaticSystem) -> Finding:
+    """What the launch file would start: met when it starts nodes (or the spec wants
+    none); when it starts none that the walk can see, not checked if parts are hidden."""
+    if system.nodes or not spec.nodes:
+        return Finding('launch file', MET, _summary(system))
+    if system.hidden:
+        return Finding('launch file', NOT_CHECKED,
+                       f'{_summary(system)} that the static check can see; '
+                       f'{", ".join(dict.fromkeys(system.hidden))} may start them '
+                       '(not checked statically)')
+    return Finding('launch file', FAILED, _summary(system), codes.NODE_MISSING)
+
+
 def _summary(system: StaticSystem) -> str:
     started = ', '.join(node.label for node in system.nodes) or 'no nodes'
     text = f'would start {started}'
     if system.skipped:
         text += f'; not started because of a false condition: {", ".join(system.skipped)}'
     return text
+
+
+def _unseen(system: StaticSystem) -> str:
+    """Why a node no visible Node action starts is not judged, or '' if it can be."""
+    kinds = list(dict.fromkeys(part.split(' in ')[0] for part in system.hidden))
+    if not kinds:
+        return ''
+    return ('no Node action the static check can see starts it; an '
+            f'{" or ".join(kinds)} of the launch files may (not checked statically)')
 
 
 def _given_arguments(system: StaticSystem) -> list[Finding]:
@@ -130,6 +155,9 @@ def _match_nodes(spec: Spec, system: StaticSystem,
                                     f'{candidate.namespace} without a name, so the program picks '
                                     'the node name; taken as this node, name not checked '
                                     'statically', at=at))
+            continue
+        if _unseen(system):
+            findings.append(Finding(requirement, NOT_CHECKED, _unseen(system), at=at))
             continue
         findings.append(Finding(requirement, FAILED, _missing_node_evidence(node_spec, system),
                                 codes.NODE_MISSING, at))
@@ -255,6 +283,9 @@ def _wiring(topic: TopicSpec, system: StaticSystem,
             at = ('topics', topic.name, f'{role}s', index)
             nodes = [matched[name]] if name in matched else [
                 node for node in system.nodes if node.full_name == name]
+            if not nodes and _unseen(system):
+                findings.append(Finding(requirement, NOT_CHECKED, _unseen(system), at=at))
+                continue
             if not nodes:
                 findings.append(Finding(requirement, FAILED,
                                         f'expected {role} {name}, but the launch file starts '
@@ -284,11 +315,17 @@ def _endpoint(requirement: str, topic: str, node: PlannedNode) -> Finding:
     if topic in rules:
         return Finding(requirement, FAILED,
                        f'remap {written[topic]} moves {topic} to {rules[topic]}')
-    relative = topic.rsplit('/', 1)[1]
+    last = topic.rsplit('/', 1)[1]
     for source, target in rules.items():
-        if target.rsplit('/', 1)[1] == relative:
+        if target.rsplit('/', 1)[1] == last:
             return Finding(requirement, FAILED,
                            f'remap {written[source]} gives {target}, not {topic}')
+    namespace = node.namespace.rstrip('/')
+    if topic.startswith(namespace + '/'):
+        relative = topic[len(namespace) + 1:]  # may have several segments: turtle1/pose
+        return Finding(requirement, NOT_CHECKED,
+                       f'no remap decides it; the program gives {topic} if it uses the relative '
+                       f'name {relative!r} (not checked statically)')
     return Finding(requirement, NOT_CHECKED,
-                   f'no remap decides it; a relative name {relative!r} in the program resolves '
-                   f'to {resolve(relative, node)} (not checked statically)')
+                   f"no remap decides it; outside the node's namespace {node.namespace}, only "
+                   f'an absolute name in the program gives {topic} (not checked statically)')
