@@ -2,7 +2,7 @@
 files start the system its specs describe, and the spec checker gives the
 verdicts the lesson shows, line for line.
 
-The static check runs as a student's terminal runs it (`python -m speccheck
+The static check runs as a student's terminal runs it (`speccheck
 static`); the running check with `speccheck.check_live` while labkit runs the
 launch, after the planner has logged its first report (the chain battery_sim
 -> battery_monitor -> dock_planner is connected then).  Expected values come

@@ -5,7 +5,7 @@ version and the fix launch and give the verdicts the lesson shows.
 The draft must stay byte for byte the code block of the stored reply, so the
 page never shows an edited draft as the assistant's.  Each launch file is
 checked against the lesson's spec as the lesson checks it: the static check
-through `python -m speccheck static` in a student's terminal environment,
+through `speccheck static` in a student's terminal environment,
 the running check with `speccheck.check_live` while labkit runs the launch.
 Each launch gets a TMPDIR of its own, so the files it leaves behind are
 counted exactly.

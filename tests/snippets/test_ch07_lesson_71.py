@@ -83,7 +83,7 @@ def test_static_check_sees_the_arguments_and_turtlesim_but_no_robot(ros_env):
 def test_the_running_capstone_meets_its_spec(ros_env):
     """What the lesson runs: the default launch, checked once both turtles reached a
     waypoint (every node up, pose -> command chain working).  The running check runs
-    as `python -m speccheck live` in the sourced environment, which imports the
+    as `speccheck live` in the sourced environment, which imports the
     capstone's message types as the lesson's kernel does."""
     spec = speccheck.load_spec(SPEC)
     with labkit.launch(PACKAGE, LAUNCH, env=ros_env, cwd=paths.WORKSPACE) as run:

@@ -8,7 +8,7 @@ draft's watchdog and, since the draft found that gap, the book's capstone.launch
 
 Expected names come from the specs themselves (`speccheck.load_spec`), so the
 specs and the system can only change together.  Running checks run as
-`python -m speccheck live` in the sourced environment, as in 7.1's test.
+`speccheck live` in the sourced environment, as in 7.1's test.
 """
 from __future__ import annotations
 

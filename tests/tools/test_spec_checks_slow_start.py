@@ -43,7 +43,7 @@ VALUE = 'node /turtle3/safety_monitor: parameter stop_distance: value 1.0, the s
 
 
 class Speccheck:
-    """Stands in for `python -m speccheck live`: answers per system, in order, and
+    """Stands in for `speccheck live`: answers per system, in order, and
     records each command line."""
 
     def __init__(self, answers: dict[str, list[tuple[int, str]]]):
@@ -106,7 +106,7 @@ def test_a_system_that_never_starts_is_reported_not_caught(package, monkeypatch)
     assert not verdict.passed
     [problem] = verdict.problems
     assert problem.startswith(
-        f'`python -m speccheck live src/my_ws_exercises/{ch07_01.SPEC} --timeout '
+        f'`speccheck live src/my_ws_exercises/{ch07_01.SPEC} --timeout '
         f'{spec_run.SLOW_START} {ch07_01.DEFECT}` did not start /turtle3/controller within '
         f'{spec_run.SLOW_START} s, so your spec was not judged on {OTHER_CONFIG}')
     assert 'Nodes in the graph: /turtlesim, /turtle3/wall_sensor.' in problem

@@ -1,7 +1,7 @@
 """Checks of lesson 6.8 (From requirements to a launch file with an assistant).
 
 Exercise 6.8.1 grades a spec file, and a spec is judged by what it does: the
-student's spec is run through `python -m speccheck`, as their terminal would
+student's spec is run through `speccheck`, as their terminal would
 run it, against the book's launch file that meets the requirements (the spec
 must pass it, statically and running) and against two launch files with one
 wrong value each (the static check must fail them).  Never the spec's text,
@@ -30,9 +30,9 @@ DEFECTS = (
 
 
 def run_speccheck(package: StudentPackage, mode: str, launch_file: str) -> SpecRun:
-    """`python -m speccheck MODE SPEC --launch my_robot_pkg FILE` in the student's workspace."""
+    """`speccheck MODE SPEC --launch my_robot_pkg FILE` in the student's workspace."""
     spec = package.source / SPEC
-    shown = (f'python -m speccheck {mode} {package.shown(spec)} '
+    shown = (f'speccheck {mode} {package.shown(spec)} '
              f'--launch {BOOK_PACKAGE} {launch_file}')
     return spec_run.run_speccheck(package, mode, spec, ['--launch', BOOK_PACKAGE, launch_file],
                                   shown)

@@ -2,7 +2,7 @@
 
 Exercise 6.14.1 grades a launch file against a spec: the student's launch
 file is judged by the book's spec checker, run as their terminal would run
-it (`python -m speccheck`), against dock_watch_pkg's
+it (`speccheck`), against dock_watch_pkg's
 specs/dock_watch_robot.spec.yaml.  The spec describes the default arguments
 only, so the file is also checked with `robot:=rover` against the same spec
 with /rover/ names: a namespace written in as text passes the defaults and
@@ -43,7 +43,7 @@ class Stage:
 
     def command(self, package: StudentPackage) -> str:
         spec = SPEC if self.robot == ROBOT else f'{SPEC} (its names with /{self.robot}/)'
-        return ' '.join(['python -m speccheck', self.mode, spec, '--launch', package.name,
+        return ' '.join(['speccheck', self.mode, spec, '--launch', package.name,
                          Path(LAUNCH).name, *self.arguments])
 
 

@@ -2,7 +2,7 @@
 
 Exercise 7.1.1 grades a spec file by what it does, as exercise 6.8.1 does:
 the student's spec for the new requirement R9 (a third robot, turtle3) is
-run through `python -m speccheck live`, as their terminal would run it,
+run through `speccheck live`, as their terminal would run it,
 against the capstone with `robot_count:=3`, which meets R9 (it must pass),
 then against two systems that do not: the capstone with two robots, and
 one where turtle3 runs with turtle4's configuration (both must fail).
@@ -67,7 +67,7 @@ def run_speccheck(package: StudentPackage, system: System) -> SpecRun:
     spec = package.source / SPEC
     return spec_run.run_live(
         package, spec, list(system.launch),
-        lambda target: f'python -m speccheck live {package.shown(spec)} {" ".join(target)}',
+        lambda target: f'speccheck live {package.shown(spec)} {" ".join(target)}',
         system.runs, system.shown)
 
 

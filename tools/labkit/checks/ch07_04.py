@@ -182,7 +182,7 @@ def _speccheck(package: StudentPackage, target: list[str], system: str) -> spec_
     longer (spec_run.run_live)."""
     return spec_run.run_live(
         package, package.source / SPEC, target,
-        lambda words: ' '.join(['python -m speccheck live',
+        lambda words: ' '.join(['speccheck live',
                                 package.shown(package.source / SPEC), *words]),
         EXPECTED_NODES.__contains__, system)
 

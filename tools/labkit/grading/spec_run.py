@@ -1,4 +1,4 @@
-"""One run of the spec checker (`python -m speccheck`) in a student's workspace,
+"""One run of the spec checker (`speccheck`) in a student's workspace,
 as the checks of the spec lessons (6.8, 6.14, 7.1) grade with it.
 
 speccheck live waits 20 s for the spec's nodes.  On a busy machine a system
@@ -19,6 +19,9 @@ from pathlib import Path
 
 from labkit.grading.student_package import StudentPackage
 
+#: The `speccheck` command next to this interpreter, as a student runs it (else the module).
+_COMMAND = Path(sys.executable).with_name('speccheck')
+SPECCHECK = [str(_COMMAND)] if _COMMAND.is_file() else [sys.executable, '-m', 'speccheck']
 #: Seconds; only stops a hung run, never a speed limit.
 SPEC_TIMEOUT = 180.0
 #: speccheck's finding when the launch's nodes did not all appear in time (labkit's words)
@@ -88,9 +91,9 @@ class SpecRun:
 
 def run_speccheck(package: StudentPackage, mode: str, spec: Path, target: list[str],
                   shown: str, env: dict[str, str] | None = None) -> SpecRun:
-    """`python -m speccheck MODE SPEC TARGET...` in the student's workspace, with the
+    """`speccheck MODE SPEC TARGET...` in the student's workspace, with the
     environment of its sourced install (or `env`); `shown` is the command to print."""
-    done = subprocess.run([sys.executable, '-m', 'speccheck', mode, str(spec), *target],
+    done = subprocess.run([*SPECCHECK, mode, str(spec), *target],
                           env=package.environment() if env is None else env,
                           cwd=package.workspace, capture_output=True, text=True,
                           timeout=SPEC_TIMEOUT, check=False)
@@ -100,7 +103,7 @@ def run_speccheck(package: StudentPackage, mode: str, spec: Path, target: list[s
 def run_live(package: StudentPackage, spec: Path, target: list[str],
              command: Callable[[list[str]], str], runs: Callable[[str], bool],
              system: str) -> SpecRun:
-    """`python -m speccheck live SPEC TARGET...` (`command(target)` is what a student
+    """`speccheck live SPEC TARGET...` (`command(target)` is what a student
     types); once more with `--timeout SLOW_START` when the first run's wait ran out on
     nodes the system runs (`runs(name)`), and `unjudged` set when that one's did too
     (`system` names the system to the student)."""
