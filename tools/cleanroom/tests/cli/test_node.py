@@ -80,3 +80,26 @@ def test_unknown_option_is_reported_by_the_top_level_parser(ros2):
     assert result.stderr.splitlines() == [
         'usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...',
         'ros2: error: unrecognized arguments: --bogus']
+
+
+NODE_HELP = """\
+usage: ros2 node [-h]
+                 Call `ros2 node <command> -h` for more detailed usage. ...
+
+Various node related sub-commands
+
+options:
+  -h, --help            show this help message and exit
+
+Commands:
+  info  Output information about a node
+  list  Output a list of available nodes
+
+  Call `ros2 node <command> -h` for more detailed usage.
+"""
+
+
+@pytest.mark.parametrize('args', [(), ('-h',)])
+def test_without_a_verb_it_prints_its_help_as_jazzy_does(ros2, args):
+    """The sub-verbs sorted, in one aligned block, then the hint (seen on Jazzy)."""
+    assert (ros2('node', *args).returncode, ros2('node', *args).stdout) == (0, NODE_HELP)
