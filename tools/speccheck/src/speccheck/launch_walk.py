@@ -131,8 +131,8 @@ class StaticSystem:
     top_arguments: list[DeclaredArgument] = field(default_factory=list)
     all_arguments: list[DeclaredArgument] = field(default_factory=list)
     not_checked: list[str] = field(default_factory=list)
-    #: the parts that may start nodes the walk cannot see (e.g. 'OpaqueFunction in x.launch.py')
-    hidden: list[str] = field(default_factory=list)
+    #: (kind, launch file name) of each part that may start nodes the walk cannot see
+    hidden: list[tuple[str, str]] = field(default_factory=list)
     problems: list[str] = field(default_factory=list)
     error: str | None = None
 
@@ -189,10 +189,10 @@ class _Walker:
             return
         if isinstance(entity, IRRELEVANT) or not self._condition_holds(entity):
             return
-        self.system.not_checked.append(f'{_kind(entity)} in {Path(launch_file).name}: '
-                                       f'{_what_it_hides(entity)}')
-        if _kind(entity) in MAY_START_NODES or isinstance(entity, launch.actions.ExecuteProcess):
-            self.system.hidden.append(f'{_kind(entity)} in {Path(launch_file).name}')
+        kind, where = _kind(entity), Path(launch_file).name
+        self.system.not_checked.append(f'{kind} in {where}: {_what_it_hides(entity)}')
+        if kind in MAY_START_NODES or isinstance(entity, launch.actions.ExecuteProcess):
+            self.system.hidden.append((kind, where))
 
     def _condition_holds(self, entity: Any) -> bool:
         condition = getattr(entity, 'condition', None)

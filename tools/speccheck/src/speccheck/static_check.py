@@ -64,8 +64,9 @@ def _started(spec: Spec, system: StaticSystem) -> Finding:
     if system.hidden:
         return Finding('launch file', NOT_CHECKED,
                        f'{_summary(system)} that the static check can see; '
-                       f'{", ".join(dict.fromkeys(system.hidden))} may start them '
-                       '(not checked statically)')
+                       + ', '.join(dict.fromkeys(f'{kind} in {where}'
+                                                 for kind, where in system.hidden))
+                       + ' may start them (not checked statically)')
     return Finding('launch file', FAILED, _summary(system), codes.NODE_MISSING)
 
 
@@ -79,7 +80,7 @@ def _summary(system: StaticSystem) -> str:
 
 def _unseen(system: StaticSystem) -> str:
     """Why a node no visible Node action starts is not judged, or '' if it can be."""
-    kinds = list(dict.fromkeys(part.split(' in ')[0] for part in system.hidden))
+    kinds = list(dict.fromkeys(kind for kind, _ in system.hidden))
     if not kinds:
         return ''
     return ('no Node action the static check can see starts it; an '
@@ -134,6 +135,7 @@ def _match_nodes(spec: Spec, system: StaticSystem,
     package, executable and namespace when the launch file gives no name)."""
     matched: dict[str, PlannedNode] = {}
     unnamed_used: set[int] = set()
+    unseen = _unseen(system)
     for node_spec in spec.nodes:
         requirement = f'node {node_spec.name}'
         at = ('nodes', node_spec.name)
@@ -156,8 +158,8 @@ def _match_nodes(spec: Spec, system: StaticSystem,
                                     'the node name; taken as this node, name not checked '
                                     'statically', at=at))
             continue
-        if _unseen(system):
-            findings.append(Finding(requirement, NOT_CHECKED, _unseen(system), at=at))
+        if unseen:
+            findings.append(Finding(requirement, NOT_CHECKED, unseen, at=at))
             continue
         findings.append(Finding(requirement, FAILED, _missing_node_evidence(node_spec, system),
                                 codes.NODE_MISSING, at))
@@ -276,6 +278,7 @@ def _wiring(topic: TopicSpec, system: StaticSystem,
     """Each expected endpoint, judged on the Node action that starts it: the one
     `_match_nodes` paired with the spec node (also an unnamed one), else by name."""
     findings = []
+    unseen = _unseen(system)
     for role, names in (('publisher', topic.publishers), ('subscriber', topic.subscribers)):
         code = codes.PUBLISHER_MISSING if role == 'publisher' else codes.SUBSCRIBER_MISSING
         for index, name in enumerate(names):
@@ -283,8 +286,8 @@ def _wiring(topic: TopicSpec, system: StaticSystem,
             at = ('topics', topic.name, f'{role}s', index)
             nodes = [matched[name]] if name in matched else [
                 node for node in system.nodes if node.full_name == name]
-            if not nodes and _unseen(system):
-                findings.append(Finding(requirement, NOT_CHECKED, _unseen(system), at=at))
+            if not nodes and unseen:
+                findings.append(Finding(requirement, NOT_CHECKED, unseen, at=at))
                 continue
             if not nodes:
                 findings.append(Finding(requirement, FAILED,
