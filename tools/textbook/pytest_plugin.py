@@ -6,7 +6,7 @@ start inherits a private domain and localhost-only discovery.  At the end,
 any process still carrying the session's lease token is killed and the
 session fails, naming it.  Every session also records how long each test
 took (setup, call and teardown) in build/test-times.json, which
-tools/bench/ci_time.py sums by tier and folder.  Loaded by ``python -m
+tools/bench/ci_time.py sums by folder.  Loaded by ``python -m
 textbook test`` (-p) and by tests/conftest.py.
 """
 from __future__ import annotations

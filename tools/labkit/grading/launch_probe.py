@@ -122,9 +122,8 @@ def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[st
             if started != last_started:
                 last_started, steady_since = started, time.monotonic()
             present = set(observer.node_names())
-            complete = bool(expected) and expected <= present
-            settle = PROCESSES_SETTLED if complete or not expected \
-                else PROCESSES_SETTLED_WITH_NODES_MISSING
+            complete = bool(expected) and expected <= present  # up: no settle needed
+            settle = PROCESSES_SETTLED_WITH_NODES_MISSING if expected else PROCESSES_SETTLED
             settled = time.monotonic() - steady_since >= settle
             if _launch_is_up(lines, present) and (settled or complete):
                 break
