@@ -35,7 +35,8 @@ def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
                ROS_LOG_DIR=str(tmp_path_factory.mktemp('ros_log')))
     try:
         yield env
-    finally:
+    finally:  # the daemon the module's first listing started, as a user would stop it
+        subprocess.run([ROS2, 'daemon', 'stop'], env=env, capture_output=True, check=False)
         lease.release()
 
 
