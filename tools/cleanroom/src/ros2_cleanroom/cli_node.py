@@ -72,6 +72,8 @@ def graph_node(args: object) -> Iterator[Node | daemon.DaemonGraph]:
         daemon.spawn()
     with cli_node() as node:
         yield node
+        if use_daemon:  # the next command asks the daemon: let it know what this one saw
+            daemon.wait_until_seen(node_names(node, include_hidden=False))
 
 
 def graph_fingerprint(node: Node) -> tuple:

@@ -34,6 +34,8 @@ REQUEST_TIMEOUT = 5.0
 #: Seconds `ros2 daemon start` waits for a new daemon to answer.
 START_TIMEOUT = 10.0
 CONNECT_TIMEOUT = 2.0
+#: Seconds the command that started a daemon waits for it to see what it saw.
+HANDOVER_TIMEOUT = 5.0
 #: The Node methods a daemon answers (everything else is refused).
 GRAPH_METHODS = frozenset({
     'get_node_names_and_namespaces', 'get_topic_names_and_types',
@@ -112,6 +114,22 @@ def start() -> bool:
             return True
         time.sleep(0.1)
     return False
+
+
+def wait_until_seen(nodes: list[str], timeout: float = HANDOVER_TIMEOUT) -> None:
+    """Wait (a bounded while) until a new daemon answers and lists `nodes`, which the
+    command that started it has seen: the next command then sees them too."""
+    from rclhelpers.names import full_name
+    deadline = time.monotonic() + timeout
+    wanted = set(nodes)
+    while time.monotonic() < deadline:
+        try:
+            seen = {full_name(n, ns) for n, ns in _request('get_node_names_and_namespaces')}
+        except (OSError, EOFError, RuntimeError):
+            seen = set()
+        if wanted <= seen:
+            return
+        time.sleep(0.1)
 
 
 def stop() -> bool:
