@@ -10,6 +10,7 @@ import importlib
 import sys
 
 VERBS = {
+    'daemon': 'Various daemon related sub-commands',
     'doctor': 'Check ROS setup and other potential issues',
     'launch': 'Run a launch file',
     'node': 'Various node related sub-commands',

@@ -1,8 +1,10 @@
 """The short-lived rclpy node every introspection verb works through.
 
-There is no daemon in the clean room, so each `ros2 node|topic|param` command
-joins the ROS graph itself, waits for discovery to settle and then answers.
-Its node is hidden (its name starts with `_`) so that it never shows up in the
+A command that lists or describes the graph asks the ROS 2 daemon when one
+is running (ros2_cleanroom.daemon): it answers at once with what it has
+seen.  Without one, the command starts one for the next command and joins
+the ROS graph itself, waits for discovery to settle and then answers.  Its
+node is hidden (its name starts with `_`) so that it never shows up in the
 listings it prints.
 """
 from __future__ import annotations
@@ -16,6 +18,8 @@ import rclpy
 from rclhelpers.names import full_name, is_hidden
 from rclpy.context import Context
 from rclpy.node import Node
+
+from ros2_cleanroom import daemon
 
 # How long discovery takes.  Measured with Fast DDS and
 # ROS_AUTOMATIC_DISCOVERY_RANGE=LOCALHOST: a new participant often hears from
@@ -56,6 +60,22 @@ def cli_node(prefix: str = '_ros2cli') -> Iterator[Node]:
         context.try_shutdown()
 
 
+@contextlib.contextmanager
+def graph_node(args: object) -> Iterator[Node | daemon.DaemonGraph]:
+    """The graph as a listing command sees it: the running daemon's, or (starting a
+    daemon for later commands, unless `--no-daemon`) a node of its own."""
+    use_daemon = not getattr(args, 'no_daemon', False)
+    if use_daemon and daemon.is_running():
+        yield daemon.DaemonGraph()
+        return
+    if use_daemon:
+        daemon.spawn()
+    with cli_node() as node:
+        yield node
+        if use_daemon:  # the next command asks the daemon: let it know what this one saw
+            daemon.wait_until_seen(node_names(node, include_hidden=False))
+
+
 def graph_fingerprint(node: Node) -> tuple:
     """Everything discovery can still be filling in, as one comparable value."""
     names = sorted(node.get_node_names_and_namespaces())
@@ -83,6 +103,8 @@ def wait_for_graph(node: Node, until: Callable[[], bool] | None = None,
     Returns once at least `min_wait` has passed, `until()` (if given) holds and
     the graph has been unchanged for `quiet` seconds; or after `max_wait`.
     """
+    if isinstance(node, daemon.DaemonGraph):
+        return  # the daemon answers with what it has seen: nothing to wait for
     min_wait = min(min_wait, max_wait)
     start = time.monotonic()
     last = None

@@ -12,6 +12,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
@@ -35,7 +36,8 @@ def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
                ROS_LOG_DIR=str(tmp_path_factory.mktemp('ros_log')))
     try:
         yield env
-    finally:
+    finally:  # the daemon the module's first listing started, as a user would stop it
+        subprocess.run([ROS2, 'daemon', 'stop'], env=env, capture_output=True, check=False)
         lease.release()
 
 
@@ -55,6 +57,20 @@ def stop_process(proc: subprocess.Popen, grace: float = 5.0) -> None:
     proc.wait()
 
 
+def _wait_for_the_daemon(node: str, env: dict[str, str], timeout: float = 15.0) -> None:
+    """With a daemon running, wait until it lists `node`, as a user re-runs `ros2 node
+    list` until a node they just started shows up (it answers with what it has seen)."""
+    status = subprocess.run([ROS2, 'daemon', 'status'], env=env, capture_output=True,
+                            text=True, check=False)
+    if status.stdout.strip() != 'The daemon is running':
+        return
+    deadline = time.monotonic() + timeout
+    while node not in subprocess.run([ROS2, 'node', 'list', '-a'], env=env, capture_output=True,
+                                     text=True, check=False).stdout.split():
+        assert time.monotonic() < deadline, f'the ros2 daemon never listed {node}'
+        time.sleep(0.2)
+
+
 @pytest.fixture(scope='module')
 def start_node(cli_env: dict[str, str]) -> Iterator[Callable[..., subprocess.Popen]]:
     """`start_node('talker', '--ros-args', ...)`: a sample node, up when this returns."""
@@ -65,7 +81,9 @@ def start_node(cli_env: dict[str, str]) -> Iterator[Callable[..., subprocess.Pop
                                 stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True,
                                 start_new_session=True)
         started.append(proc)
-        assert proc.stdout.readline().strip() == 'ready', f'sample node {kind} did not start'
+        ready, _, name = proc.stdout.readline().strip().partition(' ')
+        assert ready == 'ready', f'sample node {kind} did not start'
+        _wait_for_the_daemon(name, cli_env)
         return proc
 
     try:

@@ -98,7 +98,8 @@ def main() -> None:
     rclpy.init(args=sys.argv)
     signal.signal(signal.SIGTERM, lambda *_: rclpy.try_shutdown())
     node = KINDS[sys.argv[1]]()
-    print('ready', flush=True)  # the tests wait for this line before using the node
+    # the tests wait for this line (and for a running daemon to list the node)
+    print('ready', node.get_fully_qualified_name(), flush=True)
     try:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):

@@ -36,7 +36,7 @@ def _max_wait(args: argparse.Namespace) -> float:
 
 
 def list_nodes(args: argparse.Namespace) -> int:
-    with cli_node.cli_node() as node:
+    with cli_node.graph_node(args) as node:
         cli_node.wait_for_graph(node, max_wait=_max_wait(args))
         names = node_names(node, include_hidden=args.all)
     if args.count_nodes:
@@ -49,7 +49,7 @@ def list_nodes(args: argparse.Namespace) -> int:
 
 def node_info(args: argparse.Namespace) -> int:
     target = args.node_name if args.node_name.startswith('/') else '/' + args.node_name
-    with cli_node.cli_node() as node:
+    with cli_node.graph_node(args) as node:
         if not cli_node.wait_for_node(node, target, include_hidden=True,
                                       max_wait=_max_wait(args)):
             return fail(f"Unable to find node '{args.node_name}'")
@@ -70,10 +70,13 @@ def node_sections(node: Node, target: str,
         ('Publishers', node.get_publisher_names_and_types_by_node),
         ('Service Servers', node.get_service_names_and_types_by_node),
         ('Service Clients', node.get_client_names_and_types_by_node),
+        # the daemon's graph answers these itself; a node of our own goes through rclpy
         ('Action Servers',
-         lambda n, ns: get_action_server_names_and_types_by_node(node, n, ns)),
+         getattr(node, 'get_action_server_names_and_types_by_node', None)
+         or (lambda n, ns: get_action_server_names_and_types_by_node(node, n, ns))),
         ('Action Clients',
-         lambda n, ns: get_action_client_names_and_types_by_node(node, n, ns)),
+         getattr(node, 'get_action_client_names_and_types_by_node', None)
+         or (lambda n, ns: get_action_client_names_and_types_by_node(node, n, ns))),
     ]
     sections = []
     for title, query in queries:

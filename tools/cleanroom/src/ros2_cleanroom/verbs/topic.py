@@ -110,7 +110,7 @@ def _count(node: Node, infos: list[Any]) -> int:
 
 
 def list_topics(args: argparse.Namespace) -> int:
-    with cli_node.cli_node() as node:
+    with cli_node.graph_node(args) as node:
         cli_node.wait_for_graph(node, max_wait=_max_wait(args))
         topics = _topics(node, args.include_hidden_topics)
         if args.verbose:
@@ -139,7 +139,7 @@ def print_verbose_list(node: Node, topics: list[tuple[str, list[str]]]) -> None:
 
 def topic_info(args: argparse.Namespace) -> int:
     topic = _absolute(args.topic_name)
-    with cli_node.cli_node() as node:
+    with cli_node.graph_node(args) as node:
         cli_node.wait_for_graph(node, max_wait=_max_wait(args),
                                 until=lambda: topic in dict(_topics(node, True)))
         types = dict(_topics(node, True)).get(topic)
