@@ -7,8 +7,8 @@ launch, or right after the daemon started, it may not have seen a node that
 labkit's observer already sees, and the command answers "Node not found"
 (or lists nothing).  A lesson waits for the state it shows, so
 `Background.wait_for_nodes` also waits until the daemon lists what the
-observer saw.  A stack without a daemon (the clean room's `ros2` looks at
-the graph itself) has nothing to wait for.
+observer saw.  The clean room's `ros2` has a daemon too (same words, same
+hand-over); a `ros2` without the `daemon` verb has nothing to wait for.
 """
 from __future__ import annotations
 
@@ -44,7 +44,7 @@ def find_ros2(env: Mapping[str, str] | None = None) -> str:
 
 @functools.cache
 def _has_daemon(ros2: str) -> bool:
-    """Whether this `ros2` has the `daemon` verb (Jazzy's ros2cli has; the clean room not)."""
+    """Whether this `ros2` has the `daemon` verb (Jazzy's ros2cli and the clean room have)."""
     found = subprocess.run([ros2, 'daemon', 'status'], capture_output=True, text=True,
                            check=False)
     return found.returncode == 0
