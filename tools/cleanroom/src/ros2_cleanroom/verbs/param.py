@@ -1,13 +1,18 @@
-"""`ros2 param list|get|set|dump`: a node's parameters through its services."""
+"""`ros2 param list|get|set|dump|describe|delete|load`: a node's parameters through its
+services."""
 from __future__ import annotations
 
 import argparse
 import re
 import sys
 
+from rcl_interfaces.msg import ParameterDescriptor, ParameterValue
+from rcl_interfaces.srv import DescribeParameters
+from rclhelpers.services import call_service
 from rclpy.node import Node
 
-from ros2_cleanroom import cli_node, param_client, param_values
+from ros2_cleanroom import cli_node, param_client, param_file, param_values
+from ros2_cleanroom.discovery_options import add_discovery_options
 from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fail, run
 
 
@@ -49,7 +54,35 @@ def build_parser() -> argparse.ArgumentParser:
     dump.add_argument('--include-hidden-nodes', action='store_true',
                       help='Consider hidden nodes as well')
     add_spin_time(dump)
+
+    delete = add_verb(verbs, 'delete', 'Delete parameter', delete_param)
+    delete.add_argument('node_name', help='Name of the ROS node')
+    delete.add_argument('parameter_name', help='Name of the parameter')
+    _add_node_options(delete)
+
+    describe = add_verb(verbs, 'describe',
+                        'Show descriptive information about declared parameters', describe_params)
+    describe.add_argument('node_name', help='Name of the ROS node')
+    describe.add_argument('parameter_names', nargs='+', help='Names of the parameters')
+    _add_node_options(describe)
+
+    load = add_verb(verbs, 'load', 'Load parameter file for a node', load_params)
+    load.add_argument('node_name', help='Name of the ROS node')
+    load.add_argument('parameter_file', help='Parameter file')
+    _add_node_options(load, wildcard=True)
     return parser
+
+
+def _add_node_options(parser: argparse.ArgumentParser, wildcard: bool = False) -> None:
+    """The options Jazzy's delete, describe and load share, in its order."""
+    add_discovery_options(parser)
+    parser.add_argument('--include-hidden-nodes', action='store_true',
+                        help='Consider hidden nodes as well')
+    if wildcard:
+        parser.add_argument('--no-use-wildcard', action='store_true',
+                            help="Do not load parameters in the '/**' namespace into the node")
+    parser.add_argument('--timeout', metavar='N', type=int, default=1,
+                        help='Wait for N seconds until node becomes available (default 1 sec)')
 
 
 def _absolute(name: str) -> str:
@@ -156,6 +189,88 @@ def dump_params(args: argparse.Namespace) -> int:
             return fail(str(error))
     flat = {name: param_values.to_python(value) for name, value in zip(names, values, strict=True)}
     print(param_values.dump_yaml(target, flat))
+    return 0
+
+
+def delete_param(args: argparse.Namespace) -> int:
+    """Unset the parameter (a value of type not set); the node's refusal goes to stderr
+    and the command still exits 0, as with `set`."""
+    with cli_node.cli_node() as node:
+        target = _find(node, args)
+        if target is None:
+            return fail('Node not found')
+        try:
+            result = param_client.set_value(node, target, args.parameter_name, ParameterValue())
+        except param_client.ParameterServiceError as error:
+            return fail(str(error))
+    if result.successful:
+        print('Deleted parameter successfully')
+    elif result.reason:
+        print(f'Deleting parameter failed: {result.reason}', file=sys.stderr)
+    else:
+        print('Deleting parameter failed', file=sys.stderr)
+    return 0
+
+
+def describe_params(args: argparse.Namespace) -> int:
+    """Each descriptor the node gives; it gives none when one name is undeclared."""
+    with cli_node.cli_node() as node:
+        target = _find(node, args)
+        if target is None:
+            return fail('Node not found')
+        request = DescribeParameters.Request(names=list(args.parameter_names))
+        response = call_service(node, DescribeParameters, f'{target}/describe_parameters',
+                                request)
+        if response is None:
+            return fail(str(param_client.ParameterServiceError(target)))
+    for descriptor in response.descriptors:
+        print(describe_descriptor(descriptor))
+    return 0
+
+
+def describe_descriptor(descriptor: ParameterDescriptor) -> str:
+    """The block `ros2 param describe` prints for one parameter."""
+    lines = [f'Parameter name: {descriptor.name}',
+             f'  Type: {param_values.type_name(ParameterValue(type=descriptor.type))}']
+    if descriptor.description:
+        lines.append(f'  Description: {descriptor.description}')
+    lines.append('  Constraints:')
+    if descriptor.read_only:
+        lines.append('    Read only: true')
+    for bounds in (*descriptor.floating_point_range, *descriptor.integer_range):
+        lines += [f'    Min value: {bounds.from_value}', f'    Max value: {bounds.to_value}']
+        if bounds.step:
+            lines.append(f'    Step: {bounds.step}')
+    if descriptor.additional_constraints:
+        lines.append(f'    Additional constraints: {descriptor.additional_constraints}')
+    return '\n'.join(lines)
+
+
+def load_params(args: argparse.Namespace) -> int:
+    """Set every parameter of the file, one by one: successes on stdout, refusals on
+    stderr, exit 0.  A file that cannot be read or parsed ends in its exception."""
+    with cli_node.cli_node() as node:
+        target = _find(node, args)
+        if target is None:
+            return fail('Node not found')
+        try:
+            values = param_file.read_parameter_file(args.parameter_file,
+                                                    use_wildcard=not args.no_use_wildcard)
+        except RuntimeError as error:
+            return fail(str(error))
+        for name, value in values.items():
+            try:
+                result = param_client.set_value(node, target, name,
+                                                param_file.to_parameter_value(value))
+            except param_client.ParameterServiceError as error:
+                return fail(str(error))
+            if result.successful:
+                print(f'Set parameter {name} successful', flush=True)
+            elif result.reason:
+                print(f'Set parameter {name} failed: {result.reason}', file=sys.stderr,
+                      flush=True)
+            else:
+                print(f'Set parameter {name} failed', file=sys.stderr, flush=True)
     return 0
 
 

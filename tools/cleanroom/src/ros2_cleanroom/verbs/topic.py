@@ -14,6 +14,7 @@ from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
+from ros2_cleanroom.discovery_options import add_discovery_options
 from ros2_cleanroom.interfaces import (
     import_interface,
     message_to_csv,
@@ -27,6 +28,9 @@ from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fa
 
 def build_parser() -> argparse.ArgumentParser:
     parser, verbs = command_parser('topic', 'Various topic related sub-commands')
+    # Jazzy has it on the command too; each sub-verb's own default wins over it.
+    parser.add_argument('--include-hidden-topics', action='store_true',
+                        help='Consider hidden topics as well')
 
     listing = add_verb(verbs, 'list', 'Output a list of available topics', list_topics)
     listing.add_argument('-t', '--show-types', action='store_true',
@@ -83,6 +87,20 @@ def build_parser() -> argparse.ArgumentParser:
                     help='calculates rate using wall time (the only clock used here)')
     add_qos_arguments(hz)
     add_spin_time(hz)
+
+    type_ = add_verb(verbs, 'type', "Print a topic's type", topic_type)
+    type_.add_argument('topic_name', help="Name of the ROS topic to get type (e.g. '/chatter')")
+    add_discovery_options(type_)
+
+    find = add_verb(verbs, 'find', 'Output a list of available topics of a given type',
+                    find_topics)
+    find.add_argument('topic_type',
+                      help="Name of the ROS topic type to filter for (e.g. 'std_msg/msg/String')")
+    add_discovery_options(find)
+    find.add_argument('-c', '--count-topics', action='store_true',
+                      help='Only display the number of topics discovered')
+    find.add_argument('--include-hidden-topics', action='store_true',
+                      help='Consider hidden topics as well')
     return parser
 
 
@@ -163,6 +181,36 @@ def topic_info_verbose(types: list[str], publishers: list[Any], subscribers: lis
     blocks.append(f'Subscription count: {len(subscribers)}')
     blocks += [str(info) for info in subscribers]
     return ''.join(block + '\n\n' for block in blocks)
+
+
+def topic_type(args: argparse.Namespace) -> int:
+    """The topic's types, one a line; an unknown (or hidden) topic fails silently.
+
+    The name is taken as given: `chatter` is not `/chatter`.
+    """
+    with cli_node.graph_node(args) as node:
+        cli_node.wait_for_graph(node, max_wait=_max_wait(args),
+                                until=lambda: args.topic_name in dict(_topics(node, False)))
+        types = dict(_topics(node, False)).get(args.topic_name)
+    if not types:
+        return 1
+    for name in types:
+        print(name)
+    return 0
+
+
+def find_topics(args: argparse.Namespace) -> int:
+    """Topics that carry `topic_type` (spelled exactly as the graph spells it)."""
+    with cli_node.graph_node(args) as node:
+        cli_node.wait_for_graph(node, max_wait=_max_wait(args))
+        topics = [name for name, types in _topics(node, args.include_hidden_topics)
+                  if args.topic_type in types]
+    if args.count_topics:
+        print(len(topics))
+        return 0
+    for name in topics:
+        print(name)
+    return 0
 
 
 def _resolve_type(node: Node, topic: str, given: str | None) -> type:
