@@ -4,9 +4,8 @@ looked at once reported a subscription that was merely late as missing (seen in 
 and `speccheck live` without --launch a running node as 'not running'."""
 from __future__ import annotations
 
-import labkit
-from labkit.graph import GraphSnapshot, Topic
 from speccheck import live_check, load_spec
+from speccheck.graph import GraphSnapshot, Topic
 
 SPEC = """\
 nodes:
@@ -25,7 +24,7 @@ def snapshot(nodes: tuple[str, ...], subscribers: tuple[str, ...] = ()) -> Graph
 
 
 def looks(monkeypatch, *snapshots: GraphSnapshot) -> list[GraphSnapshot]:
-    """labkit.graph() gives `snapshots` in turn; returns the list of those it gave."""
+    """The graph gives `snapshots` in turn; returns the list of those it gave."""
     given: list[GraphSnapshot] = []
     queue = iter(snapshots)
 
@@ -33,7 +32,7 @@ def looks(monkeypatch, *snapshots: GraphSnapshot) -> list[GraphSnapshot]:
         given.append(next(queue))
         return given[-1]
 
-    monkeypatch.setattr(labkit, 'graph', graph)
+    monkeypatch.setattr(live_check, 'graph', graph)
     monkeypatch.setattr(live_check.time, 'sleep', lambda seconds: None)
     return given
 
@@ -56,7 +55,7 @@ def test_gives_up_after_the_grace_so_the_check_can_report_what_is_missing(monkey
         clock['now'] += 1.0
         return snapshot(('/monitor', '/sensor'))
 
-    monkeypatch.setattr(labkit, 'graph', graph)
+    monkeypatch.setattr(live_check, 'graph', graph)
     monkeypatch.setattr(live_check.time, 'monotonic', lambda: clock['now'])
     monkeypatch.setattr(live_check.time, 'sleep', lambda seconds: None)
     found = live_check._wait_for_spec(load_spec(write_spec(SPEC)), grace=3.0)

@@ -10,9 +10,9 @@ import jsonschema
 import labkit
 import pytest
 import yaml
-from labkit.graph import GraphSnapshot, Topic
 from speccheck import Status, check_live, load_spec
 from speccheck.__main__ import main
+from speccheck.graph import GraphSnapshot, Topic
 from speccheck.schema import SPEC_SCHEMA
 from speccheck.snapshot import build_spec, to_yaml
 

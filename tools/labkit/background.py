@@ -22,6 +22,7 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 
 from rclhelpers.names import is_hidden
+from speccheck.launch_command import full_node_names, node_list, with_output
 
 from labkit import observer
 from labkit.errors import LabkitError, NodesNotFoundError, ProcessExitedError
@@ -165,7 +166,7 @@ class Background:
         exits first, the command is stopped and the error says which nodes
         are missing, which ones are there, and how the output ended.
         """
-        wanted = [name if name.startswith('/') else '/' + name for name in names]
+        wanted = full_node_names(names)
         deadline = time.monotonic() + timeout
         while True:
             present = observer.node_names(include_hidden=True)
@@ -177,12 +178,12 @@ class Background:
                 self.stop()
                 raise ProcessExitedError(self._explain(
                     f'`{self.command}` exited with code {self.returncode} while waiting for '
-                    f'{_names(missing)}.'))
+                    f'{node_list(missing)}.'))
             if time.monotonic() >= deadline:
                 self.stop()
                 visible = [name for name in present if not is_hidden(name)]
                 raise NodesNotFoundError(self._explain(
-                    f'Timed out after {timeout:g} s waiting for {_names(missing)} from '
+                    f'Timed out after {timeout:g} s waiting for {node_list(missing)} from '
                     f'`{self.command}`.\nNodes in the graph: '
                     f'{", ".join(visible) if visible else "none"}.'))
             time.sleep(0.1)
@@ -201,9 +202,7 @@ class Background:
                 f'`{self.command}`, which the graph has; `ros2 daemon stop` and try again.'))
 
     def _explain(self, message: str, tail: int = 20) -> str:
-        output = self.output(last=tail)
-        return f'{message}\nLast lines of its output:\n{output}' if output else \
-            f'{message}\nIt printed nothing.'
+        return with_output(message, self.output(last=tail))
 
     # -- stopping -------------------------------------------------------
     def stop(self, sigint_grace: float = SIGINT_GRACE, sigterm_grace: float = SIGTERM_GRACE,
@@ -251,10 +250,6 @@ class Background:
     def __repr__(self) -> str:
         state = 'running' if self.running else f'exited with code {self.returncode}'
         return f'<{type(self).__name__} `{self.command}` pid {self.pid}, {state}>'
-
-
-def _names(names: list[str]) -> str:
-    return ('node ' if len(names) == 1 else 'nodes ') + ', '.join(names)
 
 
 def _signal_group(pgid: int, sig: int) -> None:

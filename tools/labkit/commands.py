@@ -3,6 +3,8 @@
 Each builds the exact command a student would type in a terminal (shown as
 `.command`), finds the `ros2` executable of the active environment (a real
 ROS 2 install or the project's own), and starts it as a :class:`Background`.
+The command line of a launch and the text of its arguments are speccheck's
+(`speccheck.launch_command`), which starts launches the same way.
 """
 from __future__ import annotations
 
@@ -11,17 +13,10 @@ import shlex
 from collections.abc import Mapping, Sequence
 from typing import Any
 
+from speccheck.launch_command import format_argument, launch_words
+
 from labkit.background import Background
 from labkit.ros2_command import find_ros2
-
-
-def format_argument(value: Any) -> str:
-    """Python values as launch/ROS command-line text: True -> `true`, 2.0 -> `2.0`."""
-    if isinstance(value, bool):
-        return 'true' if value else 'false'
-    if isinstance(value, (list, tuple)):
-        return '[' + ', '.join(format_argument(item) for item in value) + ']'
-    return str(value)
 
 
 def _start_ros2(words: list[str], env: Mapping[str, str] | None,
@@ -52,11 +47,7 @@ def launch(package_or_file: str | os.PathLike, launch_file: str | None = None, /
     variables; the ROS isolation (ROS_DOMAIN_ID, discovery range) is
     inherited from the notebook.
     """
-    words = ['ros2', 'launch', os.fspath(package_or_file)]
-    if launch_file is not None:
-        words.append(launch_file)
-    merged = {**(launch_arguments or {}), **arguments}
-    words += [f'{name}:={format_argument(value)}' for name, value in merged.items()]
+    words = launch_words(package_or_file, launch_file, {**(launch_arguments or {}), **arguments})
     return _start_ros2(words, env, cwd)
 
 

@@ -1,6 +1,11 @@
 """Errors labkit raises; their messages are written for a student to read."""
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from speccheck.ros_error import RosError
+
 
 class LabkitError(RuntimeError):
     """Base class of the errors labkit raises for a lesson to show."""
@@ -12,3 +17,13 @@ class NodesNotFoundError(LabkitError):
 
 class ProcessExitedError(LabkitError):
     """The background command ended while we were waiting for it."""
+
+
+@contextmanager
+def as_labkit_error() -> Iterator[None]:
+    """speccheck's graph helpers (which labkit uses) raise RosError; lessons and
+    graders catch LabkitError, so that is what labkit raises, with the same message."""
+    try:
+        yield
+    except RosError as error:
+        raise LabkitError(str(error)) from None

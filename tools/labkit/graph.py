@@ -4,68 +4,33 @@ What rqt_graph shows, as data a lesson can print or assert on: nodes,
 topics with their types, who publishes and who subscribes.  Hidden nodes
 (labkit's own, ros2cli's) and the topics every node has (/rosout,
 /parameter_events) are left out by default, like rqt_graph's "Hide" options.
+The reading is speccheck's (`speccheck.graph`, one copy for both tools);
+labkit adds the drawing and raises LabkitError.
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
-from rcl_interfaces.srv import GetParameters, ListParameters
-from rclhelpers.names import is_hidden
-from rclpy.parameter import parameter_value_to_python
+from speccheck import graph as shared
+from speccheck.graph import DEFAULT_TOPICS, Topic
 
-from labkit import observer
-from labkit.errors import LabkitError
+from labkit.errors import as_labkit_error
 from labkit.graph_drawing import render
 
-#: Topics every node publishes or subscribes to; noise in a picture of a system.
-DEFAULT_TOPICS = ('/rosout', '/parameter_events')
+__all__ = ['DEFAULT_TOPICS', 'GraphSnapshot', 'Topic', 'graph', 'read_parameters']
 
 
 @dataclass(frozen=True)
-class Topic:
-    """One topic: its name, message type(s) and the nodes on each side."""
-
-    name: str
-    types: tuple[str, ...]
-    publishers: tuple[str, ...]
-    subscribers: tuple[str, ...]
-
-    @property
-    def type(self) -> str:
-        """The message type (types joined with ', ' in the rare mixed case)."""
-        return ', '.join(self.types)
-
-
-@dataclass(frozen=True)
-class GraphSnapshot:
-    """The ROS graph at one moment.
+class GraphSnapshot(shared.GraphSnapshot):
+    """The ROS graph at one moment (see :class:`speccheck.graph.GraphSnapshot`),
+    which draws itself as rqt_graph would.
 
     Attributes:
         nodes: full node names, sorted.
         topics: topic name -> :class:`Topic`, sorted by name.
         services: service name -> service types (hidden services left out).
     """
-
-    nodes: tuple[str, ...]
-    topics: dict[str, Topic]
-    services: dict[str, tuple[str, ...]] = field(default_factory=dict)
-
-    def publishers(self, topic: str) -> tuple[str, ...]:
-        """Nodes publishing on `topic`."""
-        return self.topics[topic].publishers
-
-    def subscribers(self, topic: str) -> tuple[str, ...]:
-        """Nodes subscribed to `topic`."""
-        return self.topics[topic].subscribers
-
-    def edges(self) -> list[tuple[str, str]]:
-        """(from, to) pairs, node -> topic -> node, as rqt_graph draws them."""
-        pairs = []
-        for topic in self.topics.values():
-            pairs += [(node, topic.name) for node in topic.publishers]
-            pairs += [(topic.name, node) for node in topic.subscribers]
-        return pairs
 
     def parameters(self, node: str) -> dict[str, Any]:
         """The parameters of a running node, name -> value, read from its services."""
@@ -75,17 +40,6 @@ class GraphSnapshot:
         """The graph as a matplotlib Figure (see :func:`labkit.draw_graph`)."""
         return render(self, **options)
 
-    def __str__(self) -> str:
-        lines = [f'{len(self.nodes)} nodes: {", ".join(self.nodes) or "none"}']
-        for topic in self.topics.values():
-            lines.append(f'{topic.name} [{topic.type}]')
-            lines.append(f'    published by: {", ".join(topic.publishers) or "nobody"}')
-            lines.append(f'    subscribed by: {", ".join(topic.subscribers) or "nobody"}')
-        return '\n'.join(lines)
-
-    def _repr_pretty_(self, printer: Any, cycle: bool) -> None:  # IPython display
-        printer.text(str(self))
-
 
 def graph(include_hidden: bool = False, include_default_topics: bool = False) -> GraphSnapshot:
     """Look at the ROS graph now and return what is in it.
@@ -93,26 +47,8 @@ def graph(include_hidden: bool = False, include_default_topics: bool = False) ->
     The first call in a kernel takes a few seconds (discovery has to find
     everything); later calls are quick.
     """
-    observer.settle()
-    node = observer.observer().node
-    endpoints = observer.topic_endpoints(node)
-    visible = {name for name in observer.live_node_names(node, endpoints)
-               if include_hidden or not is_hidden(name)}
-    topics = {}
-    for topic, (types, publishers, subscribers) in sorted(endpoints.items()):
-        if not include_hidden and is_hidden(topic):
-            continue
-        if not include_default_topics and topic in DEFAULT_TOPICS:
-            continue
-        pubs = sorted(name for name in publishers if name in visible)
-        subs = sorted(name for name in subscribers if name in visible)
-        if not pubs and not subs:
-            continue  # only hidden nodes use it
-        topics[topic] = Topic(topic, tuple(types), tuple(pubs), tuple(subs))
-    services = {service: tuple(types)
-                for service, types in sorted(node.get_service_names_and_types())
-                if include_hidden or not is_hidden(service)}
-    return GraphSnapshot(tuple(sorted(visible)), topics, services)
+    seen = shared.graph(include_hidden, include_default_topics)
+    return GraphSnapshot(seen.nodes, seen.topics, seen.services)
 
 
 def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
@@ -123,17 +59,6 @@ def read_parameters(node: str, timeout: float = 5.0) -> dict[str, Any]:
 
     Raises LabkitError when the node does not answer its parameter services.
     """
-    target = node if node.startswith('/') else '/' + node
-    obs = observer.observer()
-    listing = obs.read(ListParameters, f'{target}/list_parameters',
-                       ListParameters.Request(depth=0), timeout)
-    if listing is None:
-        raise LabkitError(f'{target} did not answer on {target}/list_parameters: '
-                          'is the node running (see labkit.graph().nodes)?')
-    names = sorted(listing.result.names)
-    values = obs.read(GetParameters, f'{target}/get_parameters',
-                      GetParameters.Request(names=names), timeout)
-    if values is None:
-        raise LabkitError(f'{target} did not answer on {target}/get_parameters')
-    return {name: parameter_value_to_python(value)
-            for name, value in zip(names, values.values, strict=True)}
+    with as_labkit_error():
+        return shared.read_parameters(
+            node, timeout, hint='is the node running (see labkit.graph().nodes)?')

@@ -9,37 +9,21 @@ labkit's observer already sees, and the command answers "Node not found"
 `Background.wait_for_nodes` also waits until the daemon lists what the
 observer saw.  The clean room's `ros2` has a daemon too (same words, same
 hand-over); a `ros2` without the `daemon` verb has nothing to wait for.
+Which `ros2` that is, `find_ros2`, is speccheck's (it starts launches too).
 """
 from __future__ import annotations
 
 import functools
-import os
-import shutil
 import subprocess
-import sys
 import time
-from collections.abc import Iterable, Mapping
-from pathlib import Path
+from collections.abc import Iterable
+
+from speccheck.launch_command import find_ros2
+
+__all__ = ['find_ros2', 'missing_from_daemon']
 
 #: Seconds between two looks at the daemon's graph.
 POLL = 0.2
-
-
-def find_ros2(env: Mapping[str, str] | None = None) -> str:
-    """The `ros2` a terminal with this environment would run.
-
-    Falls back to the one next to this Python (a project venv that is not on
-    PATH, e.g. in a notebook kernel started directly from .venv).
-    """
-    path = (env if env is not None else os.environ).get('PATH', os.defpath)
-    found = shutil.which('ros2', path=path)
-    if found:
-        return found
-    beside = Path(sys.executable).parent / 'ros2'
-    if beside.exists():
-        return str(beside)
-    raise FileNotFoundError('no `ros2` command found on PATH nor next to '
-                            f'{sys.executable}; is ROS 2 (or the project venv) set up?')
 
 
 @functools.cache

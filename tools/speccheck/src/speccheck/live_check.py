@@ -1,19 +1,17 @@
 """The running check: a spec against the ROS graph as it is now.
 
-Reads the graph, parameters and QoS with labkit (rclpy only, so it works
-with a real ROS 2 and with the clean room alike) and measures topic rates
-over a bounded window.
+Reads the graph, parameters and QoS with rclpy only (`graph`, `qos`), so it
+works with a real ROS 2 and with the clean room alike, and measures topic
+rates over a bounded window (`rates`).
 """
 from __future__ import annotations
 
 import time
 
-import labkit
-from labkit import qos, rates
-from labkit.graph import GraphSnapshot
-
-from speccheck import codes, values
+from speccheck import codes, qos, rates, values
+from speccheck.graph import GraphSnapshot, graph, read_parameters
 from speccheck.report import Finding, Report, Status, located
+from speccheck.ros_error import RosError
 from speccheck.spec import NodeSpec, Spec, TopicSpec
 
 MET, FAILED, NOT_CHECKED = Status.MET, Status.FAILED, Status.NOT_CHECKED
@@ -53,7 +51,7 @@ def _wait_for_spec(spec: Spec, grace: float) -> GraphSnapshot:
     or as it is after `grace` seconds."""
     deadline = time.monotonic() + grace
     while True:
-        snapshot = labkit.graph()
+        snapshot = graph()
         if _all_present(spec, snapshot) or time.monotonic() >= deadline:
             return snapshot
         time.sleep(0.1)
@@ -84,8 +82,8 @@ def _node(node_spec: NodeSpec, snapshot: GraphSnapshot) -> list[Finding]:
     if node_spec.parameters is None:
         return findings
     try:
-        actual = labkit.read_parameters(node_spec.name)
-    except labkit.LabkitError as error:
+        actual = read_parameters(node_spec.name)
+    except RosError as error:
         return [*findings, Finding(f'{requirement}: parameters', FAILED, str(error),
                                    codes.PARAMETERS_UNREADABLE, (*at, 'parameters'))]
     for wanted in node_spec.parameters:

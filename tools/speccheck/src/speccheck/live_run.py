@@ -1,11 +1,10 @@
-"""The running check of a launch file: start it with labkit, check, stop it."""
+"""The running check of a launch file: start it, check, stop it."""
 from __future__ import annotations
 
 from pathlib import Path
 
-import labkit
-
 from speccheck import codes
+from speccheck.launcher import Launch, LaunchError
 from speccheck.live_check import DEFAULT_WINDOW, check_live
 from speccheck.report import Finding, Report, Status, located
 from speccheck.spec import Spec
@@ -23,10 +22,10 @@ def check_launch_live(spec: Spec, launch_file: str | Path | tuple[str, str] | No
         return check_live(spec, window)
     words = launch_file if isinstance(launch_file, tuple) else (str(launch_file),)
     target = Path(words[-1]).name + ''.join(f' {k}:={v}' for k, v in (arguments or {}).items())
-    with labkit.launch(*words, launch_arguments=arguments or {}) as run:
+    with Launch(*words, arguments=arguments) as run:
         try:
             run.wait_for_nodes([node.name for node in spec.nodes], timeout=timeout)
-        except labkit.LabkitError as error:
+        except LaunchError as error:
             return Report('live', spec.source, target, located(
                 [Finding('launch', Status.FAILED, str(error), codes.LAUNCH_FAILED)], spec.lines))
         report = check_live(spec, window, target)

@@ -3,7 +3,7 @@ system that works (then tighten it by hand: rates, ranges, arguments).
 
 It records what the running check can verify: each node with the parameters it
 has as read (type and value), and each topic with its type, publishers and
-subscribers, seen as labkit sees the graph (hidden nodes and topics, /rosout
+subscribers, seen as `speccheck.graph` sees it (hidden nodes and topics, /rosout
 and /parameter_events left out), so `speccheck live` meets it on the same system.
 """
 from __future__ import annotations
@@ -15,11 +15,13 @@ from array import array
 from pathlib import Path
 from typing import Any
 
-import labkit
 import yaml
-from labkit.graph import GraphSnapshot
 
 from speccheck import values
+from speccheck.graph import GraphSnapshot, read_parameters
+from speccheck.graph import graph as read_graph
+from speccheck.launcher import Launch
+from speccheck.ros_error import RosError
 from speccheck.schema import FQN_PATTERN, SPEC_SCHEMA
 
 #: Seconds the graph must stay the same before a launched system counts as up.
@@ -103,17 +105,17 @@ def to_yaml(data: dict, notes: list[str]) -> str:
 
 def take(description: str = 'Snapshot of the running system') -> tuple[dict, list[str]]:
     """The spec of the system running now."""
-    graph = labkit.graph()
-    if not graph.nodes:
+    seen = read_graph()
+    if not seen.nodes:
         raise SnapshotError('no nodes in the ROS graph: is the system running, in this '
                             'ROS_DOMAIN_ID?')
     parameters: dict[str, dict[str, Any] | str] = {}
-    for node in graph.nodes:
+    for node in seen.nodes:
         try:
-            parameters[node] = labkit.read_parameters(node)
-        except labkit.LabkitError as error:
+            parameters[node] = read_parameters(node)
+        except RosError as error:
             parameters[node] = str(error)
-    return build_spec(graph, parameters, description)
+    return build_spec(seen, parameters, description)
 
 
 def settled_graph(timeout: float, quiet: float = QUIET) -> None:
@@ -122,12 +124,12 @@ def settled_graph(timeout: float, quiet: float = QUIET) -> None:
     deadline = time.monotonic() + timeout
     last, since = None, time.monotonic()
     while time.monotonic() < deadline:
-        graph = labkit.graph()
-        seen = (graph.nodes, tuple((t.name, t.publishers, t.subscribers)
-                                   for t in graph.topics.values()))
+        now = read_graph()
+        seen = (now.nodes, tuple((t.name, t.publishers, t.subscribers)
+                                 for t in now.topics.values()))
         if seen != last:
             last, since = seen, time.monotonic()
-        elif graph.nodes and time.monotonic() - since >= quiet:
+        elif now.nodes and time.monotonic() - since >= quiet:
             return
         time.sleep(0.25)
 
@@ -141,6 +143,6 @@ def snapshot_launch(launch_file: str | Path | tuple[str, str] | None,
         return take()
     words = launch_file if isinstance(launch_file, tuple) else (str(launch_file),)
     shown = Path(words[-1]).name + ''.join(f' {k}:={v}' for k, v in (arguments or {}).items())
-    with labkit.launch(*words, launch_arguments=arguments or {}):
+    with Launch(*words, arguments=arguments):
         settled_graph(timeout)
         return take(f'Snapshot of {shown}')
