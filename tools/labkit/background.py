@@ -104,9 +104,23 @@ class Background:
         with self._output_changed:
             return list(self._lines)
 
-    def output(self, last: int | None = None) -> str:
-        """The captured output as text; `last=N` keeps only the last N lines."""
+    def output(self, last: int | None = None, *, since: str | None = None,
+               until: str | None = None) -> str:
+        """The captured output as text.
+
+        `last=N` keeps only the last N lines; `since=` starts at the first line
+        matching that regular expression, `until=` ends at the first line matching
+        it after that (both included).  A lesson shows a stretch of a log that
+        does not depend on how long it ran: the start up to a line it waited
+        for, or the shutdown from Ctrl+C on.
+        """
         lines = self.lines
+        if since is not None:
+            start = next((i for i, line in enumerate(lines) if re.search(since, line)), None)
+            lines = lines[start:] if start is not None else []
+        if until is not None:
+            end = next((i for i, line in enumerate(lines) if re.search(until, line)), None)
+            lines = lines[:end + 1] if end is not None else lines
         return '\n'.join(lines[-last:] if last else lines)
 
     def wait_for_output(self, pattern: str, timeout: float = 10.0) -> str:
