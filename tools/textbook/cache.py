@@ -51,7 +51,7 @@ def tools_sources_hash() -> str:
     here = Path(__file__).parent
     sources = [here / name for name in _EXECUTION_MODULES]
     sources += [paths.TOOLS / 'labkit', paths.TOOLS / 'rclhelpers' / 'src',
-                paths.TOOLS / 'cleanroom' / 'src',
+                paths.TOOLS / 'speccheck' / 'src', paths.TOOLS / 'cleanroom' / 'src',
                 paths.ROOT / 'requirements' / 'lock.txt']
     return hash_paths(sources, base=paths.ROOT)
 
