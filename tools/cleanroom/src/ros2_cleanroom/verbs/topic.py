@@ -13,7 +13,7 @@ from rclhelpers.names import is_hidden
 from rclpy.executors import ExternalShutdownException, SingleThreadedExecutor
 from rclpy.node import Node
 
-from ros2_cleanroom import cli_node
+from ros2_cleanroom import cli_node, topic_publisher
 from ros2_cleanroom.discovery_options import add_discovery_options
 from ros2_cleanroom.interfaces import (
     import_interface,
@@ -91,6 +91,9 @@ def build_parser() -> argparse.ArgumentParser:
     type_ = add_verb(verbs, 'type', "Print a topic's type", topic_type)
     type_.add_argument('topic_name', help="Name of the ROS topic to get type (e.g. '/chatter')")
     add_discovery_options(type_)
+
+    pub = add_verb(verbs, 'pub', 'Publish a message to a topic', topic_publisher.publish)
+    topic_publisher.add_arguments(pub)
 
     find = add_verb(verbs, 'find', 'Output a list of available topics of a given type',
                     find_topics)
