@@ -1,4 +1,5 @@
-"""`ros2 topic list|info|echo|hz`: topics in the graph and the data on them."""
+"""`ros2 topic list|info|echo|hz|type|find|pub|bw|delay`: topics in the graph and the data
+on them."""
 from __future__ import annotations
 
 import argparse
@@ -23,6 +24,7 @@ from ros2_cleanroom.interfaces import (
 )
 from ros2_cleanroom.rate_window import RateWindow
 from ros2_cleanroom.topic_qos import add_qos_arguments, subscription_qos
+from ros2_cleanroom.topic_statistics import BandwidthWindow, DelayWindow
 from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fail, run
 
 
@@ -94,6 +96,21 @@ def build_parser() -> argparse.ArgumentParser:
 
     pub = add_verb(verbs, 'pub', 'Publish a message to a topic', topic_publisher.publish)
     topic_publisher.add_arguments(pub)
+
+    bw = add_verb(verbs, 'bw', 'Display bandwidth used by topic', topic_bw)
+    bw.add_argument('topic', help='Topic name to monitor for bandwidth utilization')
+    bw.add_argument('--window', '-w', type=int, default=100,
+                    help='maximum window size, in # of messages, for calculating rate '
+                         '(default: 100)')
+    add_discovery_options(bw, no_daemon=False)
+
+    delay = add_verb(verbs, 'delay', 'Display delay of topic from timestamp in header',
+                     topic_delay)
+    delay.add_argument('topic', help='Topic name to calculate the delay for')
+    delay.add_argument('--window', '-w', type=int, default=10000,
+                       help='window size, in # of messages, for calculating rate, string to '
+                            '(default: 10000)')
+    add_discovery_options(delay, no_daemon=False)
 
     find = add_verb(verbs, 'find', 'Output a list of available topics of a given type',
                     find_topics)
@@ -370,6 +387,107 @@ def topic_hz(args: argparse.Namespace) -> int:
 
         _spin(node, report_due)
     return 0
+
+
+class _Interrupted(Exception):
+    """Ctrl-C or SIGTERM during `bw` or `delay`, which then exit 2 as Jazzy's do."""
+
+
+def _stream_statistics(args: argparse.Namespace, setup: Callable[[Node, type], Callable[[],
+                       str | None]]) -> int:
+    """Wait for a publisher (warning once), subscribe via `setup`, report every second.
+
+    `setup(node, msg_type)` subscribes and returns the report function.
+    """
+    topic = _absolute(args.topic)
+    signal.signal(signal.SIGINT, signal.default_int_handler)
+    _stop_on_sigterm()
+    try:
+        with cli_node.cli_node() as node:
+            cli_node.wait_until(node, lambda: bool(node.get_publishers_info_by_topic(topic)),
+                                max_wait=_max_wait(args))
+            if _warn_if_unpublished(node, topic):
+                _spin_or_raise(node, lambda: bool(node.get_publishers_info_by_topic(topic)))
+            try:
+                msg_type = _resolve_type(node, topic, None)
+            except RuntimeError as error:
+                return fail(str(error))
+            report = setup(node, msg_type)
+            next_report = [time.monotonic() + 1.0]
+            failure: list[str] = []
+
+            def report_due() -> bool:
+                try:
+                    text = report() if time.monotonic() >= next_report[0] else None
+                except RuntimeError as error:
+                    failure.append(str(error))
+                    return True
+                if time.monotonic() >= next_report[0]:
+                    next_report[0] += 1.0
+                    if text:
+                        print(text, flush=True)
+                return False
+
+            _spin_or_raise(node, report_due)
+            return fail(failure[0]) if failure else 0
+    except (_Interrupted, KeyboardInterrupt):
+        return 2
+
+
+def _spin_or_raise(node: Node, done: Callable[[], bool]) -> None:
+    """Spin until `done()`; an interrupt raises _Interrupted."""
+    executor = SingleThreadedExecutor(context=node.context)
+    executor.add_node(node)
+    try:
+        while not done():
+            executor.spin_once(timeout_sec=0.1)
+    except (KeyboardInterrupt, ExternalShutdownException):
+        raise _Interrupted from None
+    finally:
+        executor.shutdown(timeout_sec=0)
+
+
+def topic_bw(args: argparse.Namespace) -> int:
+    def setup(node: Node, msg_type: type) -> Callable[[], str | None]:
+        window = BandwidthWindow(args.window)
+        node.create_subscription(msg_type, _absolute(args.topic),
+                                 lambda raw: window.add(time.monotonic(), len(raw)),
+                                 subscription_qos(node, _absolute(args.topic), _no_qos()),
+                                 raw=True)
+        print(f'Subscribed to [{_absolute(args.topic)}]', flush=True)
+        return lambda: window.report(time.monotonic())
+
+    return _stream_statistics(args, setup)
+
+
+def topic_delay(args: argparse.Namespace) -> int:
+    def setup(node: Node, msg_type: type) -> Callable[[], str | None]:
+        window = DelayWindow(args.window)
+        missing: list[bool] = []
+
+        def on_message(msg: Any) -> None:
+            if not hasattr(msg, 'header'):
+                missing.append(True)
+                return
+            received = node.get_clock().now().nanoseconds
+            stamp = msg.header.stamp.sec * 10**9 + msg.header.stamp.nanosec
+            window.add((received - stamp) / 1e9)
+
+        def report() -> str | None:
+            if missing:
+                raise RuntimeError('msg does not have header')
+            return window.report()
+
+        node.create_subscription(msg_type, _absolute(args.topic), on_message,
+                                 subscription_qos(node, _absolute(args.topic), _no_qos()))
+        return report
+
+    return _stream_statistics(args, setup)
+
+
+def _no_qos() -> argparse.Namespace:
+    """No `--qos-*` options: bw and delay subscribe compatibly with the publishers."""
+    return argparse.Namespace(qos_depth=None, qos_reliability=None, qos_durability=None)
 
 
 def main(argv: list[str]) -> int:
