@@ -30,14 +30,56 @@ def test_only_what_varies_between_runs_is_normalised():
     assert normalise(text) == [
         '[INFO] [launch]: All log files can be found below /root/.ros/log/LOG-DIR',
         '[INFO] [a-1]: process started with pid [PID]',
-        '[INFO] [b-2]: process started with pid [PID]',
         '[INFO] [a-1]: process has finished cleanly [pid PID]',
+        '[INFO] [b-2]: process started with pid [PID]',
         "Action('<launch.actions.group_action.GroupAction object at 0x…>')",
         '--params-file /tmp/launch_params_…',
         'ROS_DOMAIN_ID=… and robot_count 2',
         'Finished <<< my_robot_pkg […s] / […s]',
         '[…s] WARNING:colcon.colcon_core.shell:The following packages',
     ]
+
+
+def test_the_lines_of_two_processes_may_interleave_each_keeps_its_order():
+    ours = ('$ ros2 launch pkg pair.launch.py\n'
+            '[INFO] [sensor-1]: process started with pid [11]\n'
+            '[sensor-1] [INFO] [1795793058.1] [sensor]: Reading #1\n'
+            '[INFO] [processor-2]: process started with pid [12]\n'
+            '[processor-2] [INFO] [1795793058.2] [processor]: Received #1\n'
+            '[sensor-1] [INFO] [1795793058.3] [sensor]: Reading #2\n'
+            '[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)\n'
+            '[INFO] [processor-2]: process has finished cleanly [pid 12]\n'
+            '[INFO] [sensor-1]: process has finished cleanly [pid 11]\n')
+    theirs = ('$ ros2 launch pkg pair.launch.py\n'
+              '[INFO] [processor-2]: process started with pid [22]\n'
+              '[INFO] [sensor-1]: process started with pid [21]\n'
+              '[processor-2] [INFO] [1795793158.2] [processor]: Received #1\n'
+              '[sensor-1] [INFO] [1795793158.1] [sensor]: Reading #1\n'
+              '[sensor-1] [INFO] [1795793158.3] [sensor]: Reading #2\n'
+              '[WARNING] [launch]: user interrupted with ctrl-c (SIGINT)\n'
+              '[INFO] [sensor-1]: process has finished cleanly [pid 21]\n'
+              '[INFO] [processor-2]: process has finished cleanly [pid 22]\n')
+    assert normalise(ours) == normalise(theirs)
+    # ... but not a process's own lines in another order, nor across launch's own lines
+    swapped = theirs.replace('Reading #1', 'Reading #X').replace('Reading #2', 'Reading #1')
+    assert normalise(ours) != normalise(swapped.replace('Reading #X', 'Reading #2'))
+    late = ours.replace('[sensor-1] [INFO] [1795793058.3] [sensor]: Reading #2\n', '').replace(
+        '(SIGINT)\n', '(SIGINT)\n[sensor-1] [INFO] [1795793058.3] [sensor]: Reading #2\n')
+    assert normalise(ours) != normalise(late)
+
+
+def test_where_an_install_keeps_python_is_not_a_difference():
+    venv = ('/work/main/.venv/bin/python /work/main/build/ws/install/pkg/lib/pkg/node '
+            '--ros-args\n  File "/work/main/.venv/lib/python3.11/site-packages/rclpy/node.py", '
+            'line 388, in declare_parameter')
+    ubuntu = ('/usr/bin/python3 /work/main/build/ws/install/pkg/lib/pkg/node --ros-args\n'
+              '  File "/opt/ros/jazzy/lib/python3.12/site-packages/rclpy/node.py", '
+              'line 388, in declare_parameter')
+    assert normalise(venv) == normalise(ubuntu) == [
+        'python3 /work/main/build/ws/install/pkg/lib/pkg/node --ros-args',
+        '  File "site-packages/rclpy/node.py", line 388, in declare_parameter']
+    assert normalise('[WARN] [_ros2cli_20479]: GID: 01.0f.78.fd.d5') == [
+        '[WARN] [_ros2cli_PID]: GID: …']
 
 
 def test_the_second_stacks_build_folder_stands_for_the_first():
@@ -61,6 +103,16 @@ def test_an_allowed_difference_is_kept_apart_with_its_reason():
                      _notebook('exit code 1\n'), allowed)
     assert parity.held and parity.differing == []
     assert [d.allowed for d in parity.differences] == ['why']
+
+
+def test_an_allowed_line_is_dropped_and_the_rest_of_the_cell_still_compared():
+    allowed = [{'lesson': '*', 'cell_contains': 'print', 'lines': '^UserWarning',
+                'reason': 'the build machine has no network'}]
+    ours = _notebook('OK\n', 'OK\n')
+    theirs = _notebook('OK\nUserWarning: offline\n', 'ERROR\nUserWarning: offline\n')
+    parity = compare('ch06-99-x', 'x.md', ours, theirs, allowed)
+    assert [d.cell for d in parity.differences] == [1]
+    assert parity.differing and parity.differences[0].allowed is None
 
 
 def test_the_table_says_which_stack_a_lesson_did_not_run_on():
