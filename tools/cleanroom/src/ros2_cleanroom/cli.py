@@ -12,10 +12,13 @@ import sys
 VERBS = {
     'daemon': 'Various daemon related sub-commands',
     'doctor': 'Check ROS setup and other potential issues',
+    'interface': 'Show information about ROS interfaces',
     'launch': 'Run a launch file',
     'node': 'Various node related sub-commands',
     'param': 'Various param related sub-commands',
+    'pkg': 'Various package related sub-commands',
     'run': 'Run a package specific executable',
+    'service': 'Various service related sub-commands',
     'topic': 'Various topic related sub-commands',
     'wtf': 'Use `wtf` as alias to `doctor`',
 }
@@ -27,7 +30,7 @@ def usage() -> str:
     lines = ['usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...', '',
              'ros2 is an extensible command-line tool for ROS 2.', '',
              'Commands:']
-    lines += [f'  {name:<9} {text}' for name, text in sorted(VERBS.items())]
+    lines += [f'  {name:<9}  {text}' for name, text in sorted(VERBS.items())]
     lines += ['', '  Call `ros2 <command> -h` for more detailed usage.']
     return '\n'.join(lines)
 
