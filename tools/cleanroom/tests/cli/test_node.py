@@ -36,7 +36,8 @@ def nodes(start_node):
 
 def test_list_shows_visible_nodes_sorted(ros2):
     result = ros2('node', 'list')
-    assert (result.returncode, result.stdout) == (0, '/listener\n/sensor_publisher\n')
+    assert (result.returncode, result.stdout, result.stderr) == (
+        0, '/listener\n/sensor_publisher\n', '')  # distinct names: no warning
 
 
 def test_list_all_includes_the_hidden_command_node(ros2):

@@ -145,6 +145,13 @@ def test_echo_unknown_topic_warns_and_fails(ros2):
     assert result.stderr == 'Could not determine the type for the passed topic\n'
 
 
+def test_echo_of_an_unpublished_topic_with_its_type_waits_without_a_warning(ros2):
+    """Jazzy warns only when it must find the type in the graph; with the type given it
+    subscribes and waits (here until --timeout), exit 0."""
+    result = ros2('topic', 'echo', '/nope', 'std_msgs/msg/String', '--once', '--timeout', '1')
+    assert (result.returncode, result.stdout, result.stderr) == (0, '', '')
+
+
 def test_echo_invalid_type_fails(ros2):
     result = ros2('topic', 'echo', '/chatter', 'std_msgs/msg/Nope', '--once')
     assert (result.returncode, result.stderr) == (1, 'The passed message type is invalid\n')

@@ -2,8 +2,9 @@
 from __future__ import annotations
 
 import argparse
+import sys
 
-from rclhelpers.names import is_hidden, split_full_name
+from rclhelpers.names import full_name, is_hidden, split_full_name
 from rclpy.action.graph import (
     get_action_client_names_and_types_by_node,
     get_action_server_names_and_types_by_node,
@@ -11,7 +12,6 @@ from rclpy.action.graph import (
 from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
-from ros2_cleanroom.cli_node import node_names
 from ros2_cleanroom.verb_args import add_spin_time, add_verb, command_parser, fail, run
 
 
@@ -35,15 +35,26 @@ def _max_wait(args: argparse.Namespace) -> float:
     return args.spin_time if args.spin_time is not None else cli_node.MAX_WAIT
 
 
+#: Jazzy's words when two nodes in the graph have the same full name (on standard error).
+SHARED_NAME = ('WARNING: Be aware that there are nodes in the graph that share an exact name, '
+               'which can have unintended side effects.')
+
+
 def list_nodes(args: argparse.Namespace) -> int:
+    """Every node once per node, as Jazzy lists them: two nodes with one name are
+    two lines (and counted twice), followed by a warning about them."""
     with cli_node.graph_node(args) as node:
         cli_node.wait_for_graph(node, max_wait=_max_wait(args))
-        names = node_names(node, include_hidden=args.all)
+        names = sorted(name for name in (full_name(n, ns) for n, ns
+                                         in node.get_node_names_and_namespaces())
+                       if args.all or not is_hidden(name))
     if args.count_nodes:
         print(len(names))
-    else:
-        for name in names:
-            print(name)
+        return 0
+    for name in names:
+        print(name)
+    if len(set(names)) < len(names):
+        print(SHARED_NAME, file=sys.stderr)
     return 0
 
 

@@ -324,7 +324,8 @@ def echo_topic(args: argparse.Namespace) -> int:
     with cli_node.cli_node() as node:
         cli_node.wait_until(node, lambda: bool(node.get_publishers_info_by_topic(topic)),
                             max_wait=_max_wait(args))
-        _warn_if_unpublished(node, topic)
+        if args.message_type is None:  # Jazzy warns only when it needs the type from the graph
+            _warn_if_unpublished(node, topic)
         try:
             msg_type = _resolve_type(node, topic, args.message_type)
         except RuntimeError as error:
