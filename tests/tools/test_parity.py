@@ -68,6 +68,32 @@ def test_the_lines_of_two_processes_may_interleave_each_keeps_its_order():
     assert normalise(ours) != normalise(late)
 
 
+def test_handlers_and_a_process_s_exit_may_come_before_its_output():
+    ours = ('[INFO] [greeter-2]: process started with pid [1]\n'
+            '[greeter-2] robot alpha works in /tmp\n'
+            '[INFO] [greeter-2]: process has finished cleanly [pid 1]\n'
+            '[INFO] [launch.user]: greeter said: robot alpha works in /tmp\n'
+            '[INFO] [launch.user]: system_info-1 exited with code 0\n')
+    theirs = ('[INFO] [greeter-2]: process started with pid [2]\n'
+              '[INFO] [launch.user]: system_info-1 exited with code 0\n'
+              '[INFO] [greeter-2]: process has finished cleanly [pid 2]\n'
+              '[INFO] [launch.user]: greeter said: robot alpha works in /tmp\n'
+              '[greeter-2] robot alpha works in /tmp\n')
+    assert normalise(ours) == normalise(theirs)
+    assert normalise(ours) != normalise(theirs.replace('exited with code 0', 'exited with code 1'))
+
+
+def test_launch_log_times_and_node_log_files_vary():
+    assert normalise('1795794232.2234139 [INFO] [b-2]: process started with pid [7]\n'
+                     '1795794232.3276281 [INFO] [a-1]: process started with pid [8]\n'
+                     '/root/.ros/log/python3.11_20022_1795794222494.log\n'
+                     'a-1 has the process ID 20445') == [
+        '[INFO] [a-1]: process started with pid [PID]',
+        '[INFO] [b-2]: process started with pid [PID]',
+        '/root/.ros/log/python3_PID_TIME.log',
+        'a-1 has the process ID PID']
+
+
 def test_where_an_install_keeps_python_is_not_a_difference():
     venv = ('/work/main/.venv/bin/python /work/main/build/ws/install/pkg/lib/pkg/node '
             '--ros-args\n  File "/work/main/.venv/lib/python3.11/site-packages/rclpy/node.py", '

@@ -54,6 +54,12 @@ _VARYING = [
     # colcon's durations: `[3.04s]`, `[2min 55s]`, a log line's `[0.797s]`
     (re.compile(r'\[(\d+min )?\d+(\.\d+)?s\]'), '[…s]'),
     (re.compile(re.escape(str(paths.RUNS)) + r'/[\w.-]+'), '~/ros2_ws'),
+    (re.compile(r'\bprocess ID \d+'), 'process ID PID'),
+    (re.compile(r"\bdomain ID of '\d+'"), "domain ID of '…'"),
+    # launch.log's lines start with the time in seconds
+    (re.compile(r'^\d{9,}\.\d+ ', re.M), ''),
+    # a node's log file: ~/.ros/log/<executable>_<pid>_<milliseconds>.log
+    (re.compile(r'_\d+_\d{13}\.log\b'), '_PID_TIME.log'),
     # ros2cli's hidden node carries the pid of the command: `_ros2cli_20479`
     (re.compile(r'\b_ros2cli_\d+'), '_ros2cli_PID'),
     # an endpoint's GID is made up when the endpoint is created
@@ -65,21 +71,28 @@ _VARYING = [
 _INSTALL = [
     (re.compile(r'(?<![\w/.])/[\w./-]*/bin/python3?(?:\.\d+)?(?=\s|$)', re.M), 'python3'),
     (re.compile(r'(?<![\w/.])/[\w./-]*/lib/python3\.\d+/site-packages/'), 'site-packages/'),
+    # the log file of a Python node is named after the interpreter (python, python3.12)
+    (re.compile(r'\bpython3?(?:\.\d+)?(?=_PID_TIME\.log)'), 'python3'),
 ]
-#: A line of a launched process (`[talker-1] ...`) or launch's line about it
-#: (`[INFO] [talker-1]: process started with pid [...]`); group 1 is the process.
-_PROCESS_LINE = re.compile(r'^(?:\[(?:DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\] )?'
-                           r'\[([\w.-]+-\d+)\][ :]')
+#: A line of a launched process (`[talker-1] ...`, group 2) or launch's line about
+#: it (`[INFO] [talker-1]: process started with pid [...]`, group 1).
+_PROCESS_LINE = re.compile(r'^(?:\[(?:DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\] \[([\w.-]+-\d+)\]:'
+                           r'|\[([\w.-]+-\d+)\] )')
+#: A line an event handler's LogInfo printed, e.g. on a process's output or exit.
+_HANDLER_LINE = re.compile(r'^\[(?:INFO|WARNING|ERROR)\] \[launch\.user\]: ')
 
 
 def normalise(text: str, builds: Iterable[Path] = ()) -> list[str]:
     """The lines of `text` with run-to-run variation replaced by placeholders.
 
     `builds` are build folders that stand for each other (build/jazzy and
-    build).  In a run of consecutive lines of launched processes, each
-    process's lines keep their order and the processes come one after the
-    other (by process name): launch starts the processes of one description
-    at once, and how the lines of two processes interleave is up to the
+    build).  A run of consecutive lines about launched processes is put in
+    an order launch itself defines: process by process (by name), launch's
+    own lines about the process (started, finished, died) in their order,
+    then what the process printed, in its order; the lines of event
+    handlers (`launch.user`) last, sorted.  Launch starts the processes of
+    one description at once, reads their output while it watches them exit,
+    and runs handlers as events come: how these interleave is up to the
     operating system, on either stack.
     """
     for build in builds:
@@ -87,13 +100,17 @@ def normalise(text: str, builds: Iterable[Path] = ()) -> list[str]:
     for pattern, replacement in (*_VARYING, *_INSTALL):
         text = pattern.sub(replacement, text)
     out: list[str] = []
-    run: list[tuple[str, str]] = []
-    for line in [*text.splitlines(), None]:
+    run: list[tuple[str, int, int | str, str]] = []
+    for index, line in enumerate([*text.splitlines(), None]):
         process = _PROCESS_LINE.match(line) if line is not None else None
         if process:
-            run.append((process.group(1), line))
+            about, printed = process.groups()
+            run.append((about or printed, 0 if about else 1, index, line))
             continue
-        out += [text for _, text in sorted(run, key=lambda item: item[0])]
+        if line is not None and _HANDLER_LINE.match(line):
+            run.append(('\uffff', 0, line, line))  # after every process, by text
+            continue
+        out += [item[-1] for item in sorted(run, key=lambda item: item[:3])]
         run = []
         if line is not None:
             out.append(line)

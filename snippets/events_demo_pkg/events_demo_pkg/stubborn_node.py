@@ -43,7 +43,7 @@ class StubbornNode(Node):
         if self.ignore_sigterm:
             self.get_logger().warning('Got SIGTERM: ignoring it too')
             return
-        self.get_logger().info(f'Got SIGTERM: stopping after {self.chunk} chunks')
+        self.get_logger().info('Got SIGTERM: stopping, the map saved so far')
         raise KeyboardInterrupt
 
 

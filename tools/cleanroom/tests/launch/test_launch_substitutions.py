@@ -109,7 +109,10 @@ def test_environment_variable_uses_context_environment(context):
 
 def test_find_executable(context):
     assert FindExecutable(name='sh').perform(context) == shutil.which('sh')
-    with pytest.raises(SubstitutionFailure, match="executable 'no-such-exe-cr' not found"):
+    # Jazzy's message names the list of substitutions, not the name it looked for
+    missing = r"^executable '\[<launch\.substitutions\.text_substitution\.TextSubstitution " \
+              r"object at 0x[0-9a-f]+>\]' not found on the PATH$"
+    with pytest.raises(SubstitutionFailure, match=missing):
         FindExecutable(name='no-such-exe-cr').perform(context)
 
 

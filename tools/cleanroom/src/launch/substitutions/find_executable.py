@@ -33,6 +33,6 @@ class FindExecutable(Substitution):
         """Return the executable's path."""
         name = perform_substitutions(context, self.__name)
         found = shutil.which(name, path=context.environment.get('PATH'))
-        if found is None:
-            raise SubstitutionFailure(f"executable '{name}' not found on the PATH")
+        if found is None:  # Jazzy names the substitution list, not the name it looked for
+            raise SubstitutionFailure(f"executable '{self.__name}' not found on the PATH")
         return found
