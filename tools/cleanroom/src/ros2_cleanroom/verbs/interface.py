@@ -114,10 +114,10 @@ def package_interfaces(args: argparse.Namespace) -> int:
     except (PackageNotFoundError, ValueError):
         return fail(f"Unknown package '{args.package_name}'")
     kinds = interface_packages().get(args.package_name, {})
-    for kind in _selected(args):
-        # as Jazzy's: one unordered set of names per kind
-        for name in {f'{args.package_name}/{kind}/{name}' for name in kinds.get(kind, ())}:
-            print(name)
+    # as Jazzy's: the names in the order of one (unordered) set
+    for name in {f'{args.package_name}/{kind}/{name}'
+                 for kind in _selected(args) for name in kinds.get(kind, ())}:
+        print(name)
     return 0
 
 
