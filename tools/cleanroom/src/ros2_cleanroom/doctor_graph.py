@@ -77,7 +77,8 @@ def qos_pairs(topics: list[TopicEndpoints]) -> list[QosPair]:
             for subscriber in topic.subscribers:
                 compatibility, reason = qos_check_compatible(
                     publisher.qos_profile, subscriber.qos_profile)
-                pairs.append(QosPair(topic.name, topic.types, publisher.node_name,
+                # Jazzy names the publisher's type, not every type of the topic
+                pairs.append(QosPair(topic.name, [publisher.topic_type], publisher.node_name,
                                      subscriber.node_name, compatibility, reason))
     return pairs
 

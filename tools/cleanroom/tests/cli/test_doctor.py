@@ -9,16 +9,18 @@ from __future__ import annotations
 
 import re
 import time
+from types import SimpleNamespace
 
 import pytest
-from rclpy.qos import QoSCompatibility
+from rclpy.qos import QoSCompatibility, QoSProfile
 from ros2_cleanroom.doctor_graph import (
     QosPair,
     TopicEndpoints,
     lonely_endpoint_warnings,
     qos_errors,
+    qos_pairs,
 )
-from ros2_cleanroom.doctor_report import format_section
+from ros2_cleanroom.doctor_report import format_section, qos_rows
 from ros2_cleanroom.network_info import format_flags, interfaces
 from ros2_cleanroom.verbs.doctor import summary
 
@@ -158,6 +160,20 @@ def test_findings_from_plain_endpoint_lists():
              QosPair('/c', ['x/msg/Y'], 'p', 't', QoSCompatibility.OK, '')]
     assert qos_errors(pairs) == ["ERROR: QoS compatibility error found on topic '/c': why;"]
     assert [pair.status for pair in pairs] == ['ERROR: why;', 'OK']
+
+
+def test_a_pair_on_a_topic_with_two_types_shows_the_publisher_s_type():
+    """As Jazzy's report of lesson 6.7's /range/rear: a Float64 publisher and a Float32
+    subscription appear as `/range/rear [std_msgs/msg/Float64]`."""
+    qos = QoSProfile(depth=10)
+    publisher = SimpleNamespace(node_name='rear_sensor', topic_type='std_msgs/msg/Float64',
+                                qos_profile=qos)
+    subscriber = SimpleNamespace(node_name='obstacle_monitor',
+                                 topic_type='std_msgs/msg/Float32', qos_profile=qos)
+    topic = TopicEndpoints('/range/rear', ['std_msgs/msg/Float32', 'std_msgs/msg/Float64'],
+                           publishers=[publisher], subscribers=[subscriber])
+    (pair,) = qos_pairs([topic])
+    assert qos_rows([pair])[0] == ('topic [type]', '/range/rear [std_msgs/msg/Float64]')
 
 
 def test_summary_wording():
