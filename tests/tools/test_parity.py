@@ -87,11 +87,13 @@ def test_launch_log_times_and_node_log_files_vary():
     assert normalise('1795794232.2234139 [INFO] [b-2]: process started with pid [7]\n'
                      '1795794232.3276281 [INFO] [a-1]: process started with pid [8]\n'
                      '/root/.ros/log/python3.11_20022_1795794222494.log\n'
-                     'a-1 has the process ID 20445') == [
+                     'a-1 has the process ID 20445\n'
+                     'params_file:=/tmp/ex64_qe1ov5gk/other_robot.yaml /tmp/tmpab_d3f9z') == [
         '[INFO] [a-1]: process started with pid [PID]',
         '[INFO] [b-2]: process started with pid [PID]',
         '/root/.ros/log/python3_PID_TIME.log',
-        'a-1 has the process ID PID']
+        'a-1 has the process ID PID',
+        'params_file:=/tmp/ex64_…/other_robot.yaml /tmp/tmp…']
 
 
 def test_where_an_install_keeps_python_is_not_a_difference():

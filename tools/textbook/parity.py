@@ -55,6 +55,8 @@ _VARYING = [
     (re.compile(r'\[(\d+min )?\d+(\.\d+)?s\]'), '[…s]'),
     (re.compile(re.escape(str(paths.RUNS)) + r'/[\w.-]+'), '~/ros2_ws'),
     (re.compile(r'\bprocess ID \d+'), 'process ID PID'),
+    # a folder of tempfile.mkdtemp(prefix=...): /tmp/ex64_qe1ov5gk
+    (re.compile(r'(/tmp/(?:tmp|[\w-]+_))[a-z0-9_]{8}\b'), r'\1…'),
     (re.compile(r"\bdomain ID of '\d+'"), "domain ID of '…'"),
     # launch.log's lines start with the time in seconds
     (re.compile(r'^\d{9,}\.\d+ ', re.M), ''),
