@@ -91,7 +91,10 @@ def test_fault4_node_runs_but_is_in_another_domain(broken, ros_env):
                      output), output
     nodes = _ros2(ros_env, 'node', 'list',
                   shows=lambda out: all(node in out for node in SENSORS))
-    assert sorted(nodes.split()) == sorted(['/obstacle_monitor', *SENSORS]), nodes
+    # the fault: the right sensor runs but is not listed here (nodes of an earlier run
+    # that reused this domain may still be announced for a while: not the point here)
+    assert {'/obstacle_monitor', *SENSORS} <= set(nodes.split()), nodes
+    assert '/right_sensor' not in nodes.split(), nodes
     pid = _pid_of(broken, 'right_sensor')
     environ = Path(f'/proc/{pid}/environ').read_bytes().split(b'\0')
     assert f'ROS_DOMAIN_ID={OTHER_DOMAIN}'.encode() in environ
