@@ -179,3 +179,10 @@ def test_a_pair_on_a_topic_with_two_types_shows_the_publisher_s_type():
 def test_summary_wording():
     assert summary([], 3) == '\nAll 3 checks passed\n'
     assert summary(['middleware'], 3) == '\n1/3 check(s) failed\n\nFailed modules: middleware'
+
+
+def test_echo_of_a_topic_with_only_a_subscription_takes_its_type_without_a_warning(ros2):
+    """This module's /cmd_vel has the listener's subscription and no publisher: Jazzy's
+    echo finds the type in the graph, does not warn, and waits (here until --timeout)."""
+    result = ros2('topic', 'echo', '/cmd_vel', '--once', '--timeout', '1')
+    assert (result.returncode, result.stdout, result.stderr) == (0, '', '')

@@ -324,8 +324,10 @@ def echo_topic(args: argparse.Namespace) -> int:
     with cli_node.cli_node() as node:
         cli_node.wait_until(node, lambda: bool(node.get_publishers_info_by_topic(topic)),
                             max_wait=_max_wait(args))
-        if args.message_type is None:  # Jazzy warns only when it needs the type from the graph
-            _warn_if_unpublished(node, topic)
+        # Jazzy warns only when it needs the type from the graph and the graph has none
+        # (a topic with only subscriptions has their type: no warning)
+        if args.message_type is None and topic not in dict(_topics(node, True)):
+            print(f'WARNING: topic [{topic}] does not appear to be published yet', flush=True)
         try:
             msg_type = _resolve_type(node, topic, args.message_type)
         except RuntimeError as error:
