@@ -172,7 +172,8 @@ OUTSIDE_SCRIPT = textwrap.dedent("""
 
 def _labkit_outside(tmp_path: Path) -> tuple[Path, dict[str, str]]:
     site = tmp_path / 'site-packages'
-    for package in (paths.TOOLS / 'labkit', paths.TOOLS / 'rclhelpers' / 'src' / 'rclhelpers'):
+    for package in (paths.TOOLS / 'labkit', paths.TOOLS / 'rclhelpers' / 'src' / 'rclhelpers',
+                    paths.TOOLS / 'speccheck' / 'src' / 'speccheck'):  # labkit builds on it
         shutil.copytree(package, site / package.name, ignore=shutil.ignore_patterns('__pycache__'))
     env = {k: v for k, v in os.environ.items() if k != 'LABKIT_SNIPPETS'}
     env['PYTHONPATH'] = str(site)

@@ -205,9 +205,10 @@ class Background:
     def _wait_for_the_daemon(self, nodes: list[str], timeout: float) -> None:
         """On a ROS 2 with a daemon, wait until `ros2` commands see what the observer
         saw: the nodes and the topics they use (ros2_command explains why)."""
+        # `ros2 topic list` leaves hidden topics out (an action's _action/feedback)
         topics = [topic for topic, (_types, publishers, subscribers)
                   in observer.topic_endpoints(observer.observer().node).items()
-                  if set(nodes) & (publishers | subscribers)]
+                  if set(nodes) & (publishers | subscribers) and not is_hidden(topic)]
         missing = missing_from_daemon(find_ros2(), nodes, topics, timeout=max(timeout, 10.0))
         if missing:
             self.stop()

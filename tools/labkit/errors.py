@@ -4,8 +4,6 @@ from __future__ import annotations
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from speccheck.ros_error import RosError
-
 
 class LabkitError(RuntimeError):
     """Base class of the errors labkit raises for a lesson to show."""
@@ -22,7 +20,12 @@ class ProcessExitedError(LabkitError):
 @contextmanager
 def as_labkit_error() -> Iterator[None]:
     """speccheck's graph helpers (which labkit uses) raise RosError; lessons and
-    graders catch LabkitError, so that is what labkit raises, with the same message."""
+    graders catch LabkitError, so that is what labkit raises, with the same message.
+
+    speccheck is imported here, not at the top: `import labkit` must get as far as
+    saying that ROS 2 is not sourced, and speccheck's package needs rclpy."""
+    from speccheck.ros_error import RosError
+
     try:
         yield
     except RosError as error:

@@ -1,7 +1,9 @@
 """`ros2 interface ...` in Jazzy's words (texts recorded from the Jazzy reference)."""
 from __future__ import annotations
 
+import subprocess
 import sys
+from pathlib import Path
 
 import pytest
 
@@ -119,6 +121,9 @@ Commands:
   Call `ros2 interface <command> -h` for more detailed usage.
 """
 
+#: This environment's ros2 (the module fixture `ros2` runs it too).
+ROS2 = str(Path(sys.executable).with_name('ros2'))
+
 
 @pytest.fixture(scope='module')
 def ros2i(ros2):
@@ -159,9 +164,6 @@ def test_show_constants_stay_as_written(ros2i):
 
 
 def test_show_reads_the_type_from_stdin(ros2i, cli_env):
-    import subprocess
-
-    from conftest import ROS2
     result = subprocess.run([ROS2, 'interface', 'show', '-'], input='std_msgs/msg/Bool\n',
                             env={**cli_env, 'AMENT_PREFIX_PATH': sys.prefix},
                             capture_output=True, text=True, timeout=30)

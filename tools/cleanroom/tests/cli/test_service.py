@@ -2,6 +2,8 @@
 from __future__ import annotations
 
 import subprocess
+import sys
+from pathlib import Path
 
 import pytest
 
@@ -53,6 +55,9 @@ CALL_USAGE = """\
 usage: ros2 service call [-h] [--stdin] [-r N]
                          service_name service_type [values]
 """
+
+#: This environment's ros2 (the module fixture `ros2` runs it too).
+ROS2 = str(Path(sys.executable).with_name('ros2'))
 
 
 def _without_waiting(out: str) -> str:
@@ -116,7 +121,6 @@ def test_call_default_request_and_stdin(ros2, cli_env):
     assert 'requester: making request: rcl_interfaces.srv.ListParameters_Request(prefixes=[], ' \
            'depth=0)\n\nresponse:\n' in out
     assert "names=['use_sim_time', 'start_type_description_service', 'rate_hz']" in out
-    from conftest import ROS2
     result = subprocess.run([ROS2, 'service', 'call', '--stdin', '/sensor_publisher/get_parameters',
                              'rcl_interfaces/srv/GetParameters'], input='{names: [rate_hz]}',
                             env=cli_env, capture_output=True, text=True, timeout=30)

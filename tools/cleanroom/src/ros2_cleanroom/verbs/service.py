@@ -33,7 +33,7 @@ def build_parser() -> argparse.ArgumentParser:
     parser, verbs = command_parser('service', 'Various service related sub-commands')
     parser.add_argument('--include-hidden-services', action='store_true',
                         dest='hidden_services', help=_HIDDEN_HELP)
-    call = add_verb(verbs, 'call', 'Call a service', call_service)
+    call = add_verb(verbs, 'call', 'Call a service', service_call)
     call.set_defaults(parser=call)
     call.add_argument('service_name',
                       help="Name of the ROS service to call to (e.g. '/add_two_ints')")
@@ -152,7 +152,7 @@ def service_info(args: argparse.Namespace) -> int:
     return 0
 
 
-def call_service(args: argparse.Namespace) -> int:
+def service_call(args: argparse.Namespace) -> int:
     if args.stdin and args.values is not None:
         args.parser.error('argument values: not allowed with argument --stdin')
     try:
@@ -183,7 +183,8 @@ def call_service(args: argparse.Namespace) -> int:
             started = time.monotonic()
             print(f'requester: making request: {request!r}\n', flush=True)
             future = client.call_async(request)
-            executor.spin_until_future_complete(future)
+            while not future.done():  # as long as it takes, as Jazzy waits (Ctrl-C ends it)
+                executor.spin_once(timeout_sec=0.1)
             print('response:')
             print(f'{future.result()!r}\n', flush=True)
             if period is None:
