@@ -158,7 +158,14 @@ def get_param(args: argparse.Namespace) -> int:
 
 
 def set_param(args: argparse.Namespace) -> int:
-    value = param_values.from_text(args.value)
+    return _set_and_report(args, param_values.from_text(args.value),
+                           'Set parameter successful', 'Setting parameter failed')
+
+
+def _set_and_report(args: argparse.Namespace, value: ParameterValue, done: str,
+                    failed: str) -> int:
+    """Set one parameter (`set`, and `delete` with a value of type not set); Jazzy
+    reports a refused value on stderr but still exits 0."""
     with cli_node.cli_node() as node:
         target = _find(node, args)
         if target is None:
@@ -167,13 +174,12 @@ def set_param(args: argparse.Namespace) -> int:
             result = param_client.set_value(node, target, args.parameter_name, value)
         except param_client.ParameterServiceError as error:
             return fail(str(error))
-    # Jazzy reports a refused value on stderr but still exits 0.
     if result.successful:
-        print('Set parameter successful')
+        print(done)
     elif result.reason:
-        print(f'Setting parameter failed: {result.reason}', file=sys.stderr)
+        print(f'{failed}: {result.reason}', file=sys.stderr)
     else:
-        print('Setting parameter failed', file=sys.stderr)
+        print(failed, file=sys.stderr)
     return 0
 
 
@@ -193,23 +199,9 @@ def dump_params(args: argparse.Namespace) -> int:
 
 
 def delete_param(args: argparse.Namespace) -> int:
-    """Unset the parameter (a value of type not set); the node's refusal goes to stderr
-    and the command still exits 0, as with `set`."""
-    with cli_node.cli_node() as node:
-        target = _find(node, args)
-        if target is None:
-            return fail('Node not found')
-        try:
-            result = param_client.set_value(node, target, args.parameter_name, ParameterValue())
-        except param_client.ParameterServiceError as error:
-            return fail(str(error))
-    if result.successful:
-        print('Deleted parameter successfully')
-    elif result.reason:
-        print(f'Deleting parameter failed: {result.reason}', file=sys.stderr)
-    else:
-        print('Deleting parameter failed', file=sys.stderr)
-    return 0
+    """Unset the parameter (a value of type not set), reported as `set` reports."""
+    return _set_and_report(args, ParameterValue(), 'Deleted parameter successfully',
+                           'Deleting parameter failed')
 
 
 def describe_params(args: argparse.Namespace) -> int:

@@ -258,8 +258,12 @@ def _resolve_type(node: Node, topic: str, given: str | None) -> type:
 def _warn_if_unpublished(node: Node, topic: str) -> bool:
     if node.get_publishers_info_by_topic(topic):
         return False
-    print(f'WARNING: topic [{topic}] does not appear to be published yet', flush=True)
+    _warn_unpublished(topic)
     return True
+
+
+def _warn_unpublished(topic: str) -> None:
+    print(f'WARNING: topic [{topic}] does not appear to be published yet', flush=True)
 
 
 def _select_field(msg: Any, field: str | None) -> Any:
@@ -327,7 +331,7 @@ def echo_topic(args: argparse.Namespace) -> int:
         # Jazzy warns only when it needs the type from the graph and the graph has none
         # (a topic with only subscriptions has their type: no warning)
         if args.message_type is None and topic not in dict(_topics(node, True)):
-            print(f'WARNING: topic [{topic}] does not appear to be published yet', flush=True)
+            _warn_unpublished(topic)
         try:
             msg_type = _resolve_type(node, topic, args.message_type)
         except RuntimeError as error:
