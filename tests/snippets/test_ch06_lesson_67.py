@@ -19,6 +19,7 @@ import labkit
 import psutil
 import pytest
 from textbook import paths
+from textbook.isolation import holding_fixed_domains
 
 from .._polling import poll
 from ._shown_snippets import launch_files_included_by
@@ -47,9 +48,11 @@ def _ros2(env: dict[str, str], *words: str, shows: Callable[[str], bool] = lambd
 
 @pytest.fixture(scope='module')
 def broken(ros_env) -> Iterator[labkit.Background]:
-    """broken_system.launch.py, up and past the monitor's first complaint."""
-    with labkit.launch('debug_demo_pkg', 'broken_system.launch.py', env=ros_env,
-                       cwd=paths.WORKSPACE) as run:
+    """broken_system.launch.py, up and past the monitor's first complaint; it holds
+    domain 101 meanwhile (the lesson's run would otherwise see this sensor there)."""
+    with holding_fixed_domains([int(OTHER_DOMAIN)]), \
+            labkit.launch('debug_demo_pkg', 'broken_system.launch.py', env=ros_env,
+                          cwd=paths.WORKSPACE) as run:
         run.wait_for_nodes(['/obstacle_monitor', *SENSORS], timeout=HANG_GUARD)
         run.wait_for_output(r'\[right_sensor\]: Publishing', timeout=HANG_GUARD)
         run.wait_for_output(r'No readings yet from', timeout=HANG_GUARD)

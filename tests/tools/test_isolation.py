@@ -174,3 +174,13 @@ def test_an_id_just_given_back_is_not_the_next_one_handed_out():
         with isolation.acquire_domain() as lease:
             seen.add(lease.domain_id)
     assert len(seen) > 1, seen
+
+
+def test_a_fixed_domain_is_held_by_one_run_at_a_time():
+    """6.7's sensor in domain 101: while one run holds it, another waits for it."""
+    with isolation.holding_fixed_domains([101]):
+        with pytest.raises(RuntimeError, match='IDs 101-101 are all held'):
+            with isolation.holding_fixed_domains([101], timeout=0):
+                pass
+    with isolation.holding_fixed_domains([101], timeout=0):
+        pass  # given back when the first run ends

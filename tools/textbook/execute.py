@@ -26,7 +26,7 @@ from traitlets import default
 
 from . import cache, paths, reaper, settings
 from .environment import ros_env
-from .isolation import acquire_domain
+from .isolation import acquire_domain, holding_fixed_domains
 from .lessons import Lesson, load
 
 #: labkit.exercises reads it (kept in step with labkit.exercises.APPLY_SOLUTIONS).
@@ -113,7 +113,7 @@ def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode
     """
     timeout = settings.load().cell_timeout if timeout is None else timeout
     notebook = copy.deepcopy(lesson.notebook)
-    with acquire_domain() as lease:
+    with acquire_domain() as lease, holding_fixed_domains(lesson.meta.get('fixed_domains', ())):
         env = ros_env(lease)
         # The book's build shows every solution passing its check: solution
         # cells apply the solution and a failing check fails the lesson.

@@ -11,6 +11,7 @@ from __future__ import annotations
 import contextlib
 import os
 import uuid
+from collections.abc import Iterable, Iterator
 
 try:
     from rclhelpers import domains
@@ -52,3 +53,18 @@ class DomainLease(domains.DomainLease):
 def acquire_domain(timeout: float = 120.0, ids: range = DOMAIN_IDS) -> DomainLease:
     """Lease a free domain ID of ``ids``; waits while all are taken, fails after ``timeout``."""
     return domains.lease_domain(timeout, ids, make=DomainLease)
+
+
+@contextlib.contextmanager
+def holding_fixed_domains(ids: Iterable[int], timeout: float = 1200.0) -> Iterator[None]:
+    """Exclusive use of the domain IDs a system uses by a fixed number while it runs.
+
+    Lesson 6.7's broken system puts a sensor in domain 101 on purpose; two runs
+    at once would each see the other's sensor there.  The same allocator leases
+    these IDs, so a second run waits until the first is done (``timeout``
+    only stops a run that never ends).
+    """
+    with contextlib.ExitStack() as held:
+        for domain_id in sorted(set(ids)):
+            held.enter_context(domains.lease_domain(timeout, range(domain_id, domain_id + 1)))
+        yield

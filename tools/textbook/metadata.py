@@ -42,6 +42,10 @@ SCHEMA: dict[str, Any] = {
         'learning_objectives': _TEXT_LIST,
         'skills': _TEXT_LIST,
         'prerequisites': {'type': 'array', 'items': {'type': 'string'}, 'uniqueItems': True},
+        # Domain IDs the lesson's systems use by a fixed number (6.7's sensor in
+        # 101): held for the whole run, so that no other run has nodes there.
+        'fixed_domains': {'type': 'array', 'uniqueItems': True,
+                          'items': {'type': 'integer', 'minimum': 90, 'maximum': 232}},
     },
 }
 
