@@ -8,7 +8,7 @@ from labkit import exercises
 from textbook import execute, paths
 from textbook.lessons import load
 
-from ._lesson_files import code_cells, write_lesson
+from ._lesson_files import META, code_cells, write_lesson
 
 pytestmark = pytest.mark.lesson  # executes small notebooks in kernels, as the build does
 
@@ -17,18 +17,31 @@ def test_outputs_are_recorded_in_an_isolated_sourced_environment(tmp_path):
     lesson = load(write_lesson(tmp_path, code_cells(
         "import os\n"
         "print(os.environ['ROS_DOMAIN_ID'], os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'])",
-        '%%bash\nros2 pkg prefix my_robot_pkg 2>/dev/null || echo $AMENT_PREFIX_PATH',
+        '%%bash\nros2 pkg prefix my_robot_pkg',
         '%%bash\nls -F src/',
-        "print(os.environ.get('TEXTBOOK_APPLY_SOLUTIONS'))")))
+        "print(os.environ.get('TEXTBOOK_APPLY_SOLUTIONS'))",
+        '%%bash\ncolcon build --packages-select my_robot_pkg 2>&1 | grep -v "^\\[[0-9.]*s\\]"')))
     notebook = execute.execute(lesson)
     outputs = [''.join(o.get('text', '') for o in c.outputs) for c in notebook.cells
                if c.cell_type == 'code']
     domain, discovery = outputs[0].split()
     assert 1 <= int(domain) <= 89 and discovery == 'LOCALHOST'
-    assert 'build/ws/install/my_robot_pkg' in outputs[1]
+    # the lesson's own workspace is built and sourced, shown as a student's ~/ros2_ws
+    assert outputs[1] == '~/ros2_ws/install/my_robot_pkg\n'
     # src/ holds plain folders (copies) of the book's packages, like a student's workspace
     assert 'my_robot_pkg/' in outputs[2].split()
     assert outputs[3].strip() == '1'  # the book's build applies solutions and fails on a check
+    # one package rebuilt: the others are built in this workspace, so colcon does not
+    # warn that they "haven't been built" (as in a workspace built once by the student)
+    assert 'Finished <<< my_robot_pkg' in outputs[4]
+    assert 'WARNING' not in outputs[4], outputs[4]
+
+
+def test_a_lesson_that_builds_the_workspace_starts_without_install(tmp_path):
+    path = write_lesson(tmp_path, code_cells('%%bash\nls'), {**META, 'builds_workspace': True})
+    notebook = execute.execute(load(path))
+    (cell,) = [c for c in notebook.cells if c.cell_type == 'code']
+    assert ''.join(o.get('text', '') for o in cell.outputs) == 'src\n'
 
 
 def test_a_lesson_editing_src_never_changes_snippets(tmp_path):

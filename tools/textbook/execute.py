@@ -1,10 +1,11 @@
 """Execute lessons with nbclient: real outputs, or an error that says where.
 
 Each execution gets a fresh kernel of the project's interpreter, its own ROS
-domain (isolation.py), the snippets workspace sourced, and a scratch working
-folder shaped like a student's workspace (``src/`` with a copy of each
-book package).  When the kernel is gone, processes the lesson left running
-are stopped and the lesson fails: lessons must clean up after themselves.
+domain (isolation.py) and a scratch working folder shaped like a student's
+workspace after its first ``colcon build`` (``src/`` with a copy of each book
+package, ``install/`` a copy of the book's built install, sourced).  When
+the kernel is gone, processes the lesson left running are stopped and the
+lesson fails: lessons must clean up after themselves.
 """
 from __future__ import annotations
 
@@ -24,9 +25,9 @@ from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError, CellTimeoutError, DeadKernelError
 from traitlets import default
 
-from . import cache, paths, reaper, settings
+from . import cache, paths, reaper, settings, workspace
 from .environment import ros_env
-from .isolation import acquire_domain, holding_fixed_domains
+from .isolation import DomainLease, acquire_domain, holding_fixed_domains
 from .lessons import Lesson, load
 
 #: labkit.exercises reads it (kept in step with labkit.exercises.APPLY_SOLUTIONS).
@@ -87,12 +88,18 @@ def _failure(lesson: Lesson, notebook: nbformat.NotebookNode, index: int | None,
 
 
 def _workdir(lesson: Lesson, token: str) -> Path:
-    return student_workspace(paths.RUNS / f'{lesson.path.stem}-{token}')
+    return student_workspace(paths.RUNS / f'{lesson.path.stem}-{token}',
+                             built=not lesson.meta.get('builds_workspace', False))
 
 
-def student_workspace(folder: Path) -> Path:
-    """Create ``folder`` like ``~/ros2_ws``: ``src/`` holds a copy of every book
-    package of ``snippets/`` and room for the student's own package.
+def student_workspace(folder: Path, built: bool = True) -> Path:
+    """Create ``folder`` like ``~/ros2_ws`` after the student's first ``colcon
+    build``: ``src/`` holds a copy of every book package of ``snippets/`` and
+    room for the student's own package, ``install/`` a copy of what the book's
+    build installed from them (so ``colcon build --packages-select`` of one
+    package finds the others built in this workspace, as on a student's
+    machine, and does not warn that they "haven't been built").  Without
+    ``built``, ``install/`` is left for the lesson's own first build.
 
     Copies, not links: a lesson that edits, ``cp -r`` or ``sed -i``s a file in
     ``src/`` must never change ``snippets/``, and ``ls``/``find`` show plain
@@ -103,7 +110,19 @@ def student_workspace(folder: Path) -> Path:
     for package in sorted(p.parent for p in paths.SNIPPETS.glob('*/package.xml')):
         shutil.copytree(package, folder / 'src' / package.name,
                         ignore=shutil.ignore_patterns('__pycache__'))
+    if built:
+        shutil.copytree(workspace.ensure_built().resolve(), folder / 'install', symlinks=True)
     return folder
+
+
+def student_env(lease: DomainLease, folder: Path) -> dict[str, str]:
+    """The environment of a kernel in ``folder`` (a :func:`student_workspace`):
+    ``lease``'s domain and the folder's own ``install/setup.bash`` sourced (the
+    book's, while the lesson has not built the folder yet)."""
+    install = folder / 'install'
+    if not install.is_dir():
+        return ros_env(lease)
+    return workspace.sourced_env(ros_env(lease, source_workspace=False), install)
 
 
 def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode:
@@ -114,11 +133,11 @@ def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode
     timeout = settings.load().cell_timeout if timeout is None else timeout
     notebook = copy.deepcopy(lesson.notebook)
     with acquire_domain() as lease, holding_fixed_domains(lesson.meta.get('fixed_domains', ())):
-        env = ros_env(lease)
+        workdir = _workdir(lesson, lease.token)
+        env = student_env(lease, workdir)
         # The book's build shows every solution passing its check: solution
         # cells apply the solution and a failing check fails the lesson.
         env[APPLY_SOLUTIONS] = '1'
-        workdir = _workdir(lesson, lease.token)
         current: dict[str, int | None] = {'index': None}
         client = NotebookClient(
             notebook, kernel_manager_class=NativeKernelManager, timeout=timeout,
@@ -144,6 +163,27 @@ def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode
             raise LessonExecutionError(
                 f'{lesson.source}: processes were still running after the last cell '
                 f'(stopped them; stop what a lesson starts):\n  ' + '\n  '.join(leftovers))
+    return shown_in_home(notebook, workdir)
+
+
+#: How the pages show the folder a lesson ran in: the student's workspace.
+STUDENT_WORKSPACE = '~/ros2_ws'
+
+
+def shown_in_home(notebook: nbformat.NotebookNode, workdir: Path) -> nbformat.NotebookNode:
+    """``notebook`` with the lesson's scratch folder written as ``~/ros2_ws`` in its
+    outputs: the path a student's terminal shows for their workspace, not the
+    build machine's temporary folder."""
+    def shown(text: str) -> str:
+        return text.replace(str(workdir), STUDENT_WORKSPACE)
+
+    for cell in notebook.cells:
+        for output in cell.get('outputs', []):
+            if 'text' in output:
+                output['text'] = shown(output['text'])
+            for kind, value in output.get('data', {}).items():
+                if kind.startswith('text/') and isinstance(value, str):
+                    output['data'][kind] = shown(value)
     return notebook
 
 

@@ -24,8 +24,7 @@ from pathlib import Path
 from jupyter_client.kernelspec import KernelSpecManager
 
 from . import paths, reaper
-from .environment import ros_env
-from .execute import student_workspace
+from .execute import student_env, student_workspace
 from .isolation import acquire_domain
 
 KERNEL_NAME = 'ros2-launch-textbook'
@@ -57,8 +56,8 @@ def install_kernel_spec(prefix: str = sys.prefix) -> Path:
 def run_kernel(connection_file: str) -> int:
     """Run ipykernel for ``connection_file`` in the book's environment; its exit code."""
     with acquire_domain() as lease:
-        env = ros_env(lease)
         workdir = student_workspace(paths.RUNS / f'lab-{lease.token}')
+        env = student_env(lease, workdir)
         kernel = subprocess.Popen(
             [sys.executable, '-m', 'ipykernel_launcher', '-f', connection_file],
             env=env, cwd=workdir)

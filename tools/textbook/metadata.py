@@ -44,6 +44,9 @@ SCHEMA: dict[str, Any] = {
         'prerequisites': {'type': 'array', 'items': {'type': 'string'}, 'uniqueItems': True},
         # Domain IDs the lesson's systems use by a fixed number (6.7's sensor in
         # 101): held for the whole run, so that no other run has nodes there.
+        # The lesson runs the workspace's first `colcon build` itself (6.0): its
+        # folder starts with src/ only, not with the book's install copied in.
+        'builds_workspace': {'type': 'boolean'},
         'fixed_domains': {'type': 'array', 'uniqueItems': True,
                           'items': {'type': 'integer', 'minimum': 90, 'maximum': 232}},
     },
