@@ -2,12 +2,14 @@
 SetUseSimTime, ros_arguments; and how values are judged against a spec."""
 from __future__ import annotations
 
+from array import array
+
 import pytest
 from speccheck import Status, check_static, load_spec
 from speccheck.launch_walk import walk_launch_file
 from speccheck.param_files import ParameterFileError, read_blocks
 from speccheck.spec import ParameterSpec
-from speccheck.values import judge, ros_type
+from speccheck.values import judge, ros_type, show
 
 from tests.speccheck.conftest import LAUNCH_FILES
 
@@ -122,3 +124,13 @@ def test_judging_values_type_first_then_value_then_range():
     assert judge(ParameterSpec('flag', 'integer'), True) == \
         'type bool (True), the spec says integer'
     assert judge(ParameterSpec('list', 'string_array', ['a'], True), ['a']) is None
+
+
+@pytest.mark.parametrize('value', [['lidar'], ('lidar',)])
+def test_an_array_reads_as_a_list_whatever_the_stack_gave(value):
+    """Jazzy's launch_ros evaluates a list parameter to a tuple, the clean room to a
+    list, rclpy may give an array.array: a report shows each as the spec's list."""
+    assert show(value) == "['lidar']"
+    assert show(array('d', [0.5])) == '[0.5]'
+    assert judge(ParameterSpec('sensors', 'string_array', ['radar'], True), value) == \
+        "value ['lidar'], the spec says ['radar']"

@@ -50,6 +50,8 @@ _VARYING = [
     (re.compile(r'\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d-\d+-[\w.-]+?-\d+'), 'LOG-DIR'),
     (re.compile(r'\[\d{9,}\.\d+\]'), '[TIME]'),
     (re.compile(r'launch_params_\w+'), 'launch_params_…'),
+    # a file of tempfile.mkstemp(prefix='robot_controller_params_', suffix='.yaml')
+    (re.compile(r'(?<=_params_)[a-z0-9_]{8}(?=\.yaml\b)'), '…'),
     (re.compile(r'ROS_DOMAIN_ID=\d+'), 'ROS_DOMAIN_ID=…'),
     # colcon's durations: `[3.04s]`, `[2min 55s]`, a log line's `[0.797s]`
     (re.compile(r'\[(\d+min )?\d+(\.\d+)?s\]'), '[…s]'),

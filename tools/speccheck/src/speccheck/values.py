@@ -32,7 +32,16 @@ def ros_type(value: Any) -> str | None:
 
 
 def show(value: Any) -> str:
-    return repr(value)
+    """`value` as Python writes the spec's YAML value: an array as a list, whether it
+    came as a list, a tuple (Jazzy's launch_ros evaluates parameters to tuples) or
+    an array.array (rclpy), so that the same value reads the same everywhere."""
+    return repr(_plain(value))
+
+
+def _plain(value: Any) -> Any:
+    if isinstance(value, _SEQUENCES):
+        return [_plain(item) for item in value]
+    return value
 
 
 def judge(spec: ParameterSpec, value: Any) -> str | None:
