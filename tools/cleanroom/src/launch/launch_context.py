@@ -11,6 +11,7 @@ from typing import Any
 
 from .event import Event
 from .event_handler import BaseEventHandler
+from .logging import get_logger
 
 _SPAWNER_THREADS = 4
 
@@ -197,6 +198,21 @@ class LaunchContext:
 
     def emit_event_sync(self, event: Event) -> None:
         """Queue an event; safe to call from any thread."""
+        self._emit_event(event, 'emitting event synchronously')
+
+    async def emit_event(self, event: Event) -> None:
+        """Queue an event (coroutine form)."""
+        self._emit_event(event)
+
+    def _emit_event(self, event: Event, wording: str = 'emitting event') -> None:
+        """Queue `event`, logged at DEBUG as Jazzy's `ros2 launch -d` shows it.
+
+        Jazzy logs its coroutine `emit_event` as 'emitting event' and
+        `emit_event_sync` as 'emitting event synchronously'; the clean room's
+        loop callbacks (process started or exited, timers, idle shutdown) call
+        this directly with the default wording, where Jazzy awaits emit_event.
+        """
+        get_logger('launch.launch_context').debug(f"{wording}: '{event.name}'")
         self.__events.append(event)
         loop, wakeup = self.__loop, self.__wakeup
         if loop is None or wakeup is None:
@@ -208,10 +224,6 @@ class LaunchContext:
                 loop.call_soon_threadsafe(wakeup.set)
             except RuntimeError:  # loop closed: the event is dropped with the launch
                 pass
-
-    async def emit_event(self, event: Event) -> None:
-        """Queue an event (coroutine form)."""
-        self.emit_event_sync(event)
 
     def _next_event(self) -> Event | None:
         return self.__events.popleft() if self.__events else None

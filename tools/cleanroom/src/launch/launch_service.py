@@ -12,6 +12,7 @@ from typing import Any
 from . import logging as launch_logging
 from .event import Event
 from .event_handlers.on_include_launch_description import OnIncludeLaunchDescription
+from .event_handlers.on_shutdown import OnShutdown
 from .events import IncludeLaunchDescription, Shutdown
 from .launch_context import LaunchContext
 from .launch_description import LaunchDescription
@@ -40,16 +41,16 @@ class LaunchService:
                  debug: bool = False) -> None:
         self.__argv = list(argv or [])
         self.__debug = debug
-        if debug:
-            launch_logging.launch_config.set_level(logging.DEBUG)
+        # As Jazzy's: every service sets the level, so a service made after a
+        # debug one logs at INFO again.
+        launch_logging.launch_config.set_level(logging.DEBUG if debug else logging.INFO)
         self.__logger = launch_logging.get_logger('launch')
-        log_dir = launch_logging.launch_config.log_dir
-        self.__logger.info(f'All log files can be found below {log_dir}')
-        self.__logger.info('Default logging verbosity is set to '
-                           f'{logging.getLevelName(launch_logging.launch_config.level)}')
         self.__context = LaunchContext(argv=self.__argv, noninteractive=noninteractive)
         for name, value in parse_launch_arguments(self.__argv):
             self.__context.launch_configurations[name] = value
+        # The service's own Shutdown handler comes first, so it is the last to run
+        # (`ros2 launch -d` shows it as the last OnShutdown of every launch, as in Jazzy).
+        self.__context.register_event_handler(OnShutdown(on_shutdown=self.__on_shutdown))
         self.__context.register_event_handler(OnIncludeLaunchDescription())
         self.__pending: set[asyncio.Future] = set()
         self.__shutdown_handled = False
@@ -124,6 +125,12 @@ class LaunchService:
         if self.__running:
             raise RuntimeError('LaunchService is already running')
         self.__running = True
+        # Logged when the launch starts, not when the service is made: as in Jazzy,
+        # after what `ros2 launch` queued (its IncludeLaunchDescription, with `-d`).
+        log_dir = launch_logging.launch_config.log_dir
+        self.__logger.info(f'All log files can be found below {log_dir}')
+        self.__logger.info('Default logging verbosity is set to '
+                           f'{logging.getLevelName(launch_logging.launch_config.level)}')
         loop = asyncio.get_running_loop()
         loop_was_debug = loop.get_debug()
         if self.__debug:
@@ -156,7 +163,7 @@ class LaunchService:
                 if self.__shutdown_handled:
                     return
                 if shutdown_when_idle:
-                    context.emit_event_sync(Shutdown(reason='idle'))
+                    context._emit_event(Shutdown(reason='idle'))
                     continue
             waiter = asyncio.ensure_future(context._wait_for_event())
             try:
@@ -168,17 +175,19 @@ class LaunchService:
 
     async def __process_event(self, event: Event) -> None:
         context = self.__context
-        if isinstance(event, Shutdown) and not self.__shutdown_handled:
+        if isinstance(event, Shutdown) and not context.is_shutdown:
             # A later Shutdown reaches the handlers too, as in Jazzy: OnShutdown
             # handlers run again (processes are not signalled twice).
-            self.__shutdown_handled = True
             context._set_is_shutdown(True)
+        # What Jazzy logs at DEBUG (`ros2 launch -d`): the event, then each handler taking it.
+        self.__logger.debug(f"processing event: '{event!r}'")
         for handler in list(context._event_handlers):
             if handler not in context._event_handlers:
                 continue  # unregistered by an earlier handler for this event
             try:
                 if not handler.matches(event):
                     continue
+                self.__logger.debug(f"processing event: '{event!r}' ✓ '{handler!r}'")
                 context._push_locals()
                 try:
                     entities = handler.handle(event, context)
@@ -199,12 +208,18 @@ class LaunchService:
         for sub_entity in sub_entities or []:
             self.__visit_all(sub_entity)
 
+    def __on_shutdown(self, event: Event, context: LaunchContext) -> None:
+        """Registered first, so it runs after every other Shutdown handler: then the
+        launch may end once nothing is pending (context.is_shutdown is set before any)."""
+        self.__shutdown_handled = True
+
     def __fail(self, exc: BaseException) -> None:
+        self.__logger.debug('An exception was raised in an async action/event')
         self.__logger.debug(''.join(traceback.format_exception(exc)))
         self.__logger.error(f'Caught exception in launch (see debug for traceback): {exc}')
         self.__return_code = 1
-        if not self.__shutdown_handled:
-            self.__context.emit_event_sync(Shutdown(reason=f'exception: {exc}'))
+        if not self.__context.is_shutdown:
+            self.__context._emit_event(Shutdown(reason=f'exception: {exc}'))
 
     # --- signals --------------------------------------------------------------
     def __install_signal_handlers(self, loop: asyncio.AbstractEventLoop) -> list[int]:

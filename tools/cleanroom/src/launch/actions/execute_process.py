@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import asyncio
 import signal
-from collections.abc import Iterable, Mapping, Sequence
+import traceback
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from typing import (
     TYPE_CHECKING,
 )
@@ -12,14 +13,18 @@ from ..action import Action
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..descriptions import Executable
 from ..event import Event
-from ..event_handler import BaseEventHandler, normalize_entities
+from ..event_handler import EventHandler, normalize_entities
 from ..event_handlers.on_process_exit import OnProcessExit
-from ..events import Shutdown
+from ..event_handlers.on_process_io import OnProcessIO
+from ..event_handlers.on_shutdown import OnShutdown
+from ..events import Shutdown, matches_action
 from ..events.process import (
     ProcessExited,
-    ProcessIO,
     ProcessStarted,
+    ProcessStderr,
     ProcessStdin,
+    ProcessStdout,
+    ProcessTargetedEvent,
     ShutdownProcess,
     SignalProcess,
 )
@@ -30,6 +35,7 @@ from ..substitutions.launch_configuration import LaunchConfiguration
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
 from ._process_output import ProcessOutput
 from ._process_runner import RunningProcess
+from .opaque_function import OpaqueFunction
 
 if TYPE_CHECKING:
     from ..launch_context import LaunchContext
@@ -54,23 +60,12 @@ def _flag(context: LaunchContext, value: bool | SubstitutionsList) -> bool:
     return value if isinstance(value, bool) else evaluate_condition_expression(context, value)
 
 
-class _ProcessEvents(BaseEventHandler):
-    """Routes Shutdown, ShutdownProcess, SignalProcess and ProcessStdin to one process."""
-
-    def __init__(self, action: ExecuteProcess) -> None:
-        self.__action = action
-        super().__init__(matcher=self.__matches)
-
-    def __matches(self, event: Event) -> bool:
-        if isinstance(event, Shutdown):
-            return True
-        if isinstance(event, (ShutdownProcess, SignalProcess, ProcessStdin)):
-            return bool(event.process_matcher(self.__action))
-        return False
-
-    def handle(self, event: Event, context: LaunchContext) -> None:
-        self.__action._handle_event(event, context)
-        return None
+def _targeted_handler(action: ExecuteProcess, event_type: type[ProcessTargetedEvent],
+                      on_event: Callable[[LaunchContext], None]) -> EventHandler:
+    """An EventHandler taking `event_type` events aimed at `action`, as Jazzy's are."""
+    def matches(event: Event) -> bool:
+        return isinstance(event, event_type) and bool(event.process_matcher(action))
+    return EventHandler(matcher=matches, entities=OpaqueFunction(function=on_event))
 
 
 class ExecuteProcess(Action):
@@ -131,7 +126,6 @@ class ExecuteProcess(Action):
         self.__context: LaunchContext | None = None
         self.__process: RunningProcess | None = None
         self.__future: asyncio.Future | None = None
-        self.__events_handler: _ProcessEvents | None = None
         self.__shutdown_requested = False
         self.__stop_requested: bool | None = None
         self.__timers: list[asyncio.TimerHandle] = []
@@ -253,11 +247,19 @@ class ExecuteProcess(Action):
         self.__expand(context)
         self.__context = context
         self.__logger = get_logger(self.__final_name)
-        self.__events_handler = _ProcessEvents(self)
-        context.register_event_handler(self.__events_handler)
-        if self.__on_exit is not None:
-            self.__on_exit_handler = OnProcessExit(target_action=self, on_exit=self.__on_exit)
-            context.register_event_handler(self.__on_exit_handler)
+        # The same handlers as Jazzy's (`ros2 launch -d` lists each one that takes an
+        # event); they stay registered after the process exits, as in Jazzy.
+        for handler in (
+                _targeted_handler(self, ShutdownProcess, self.__on_shutdown_process),
+                _targeted_handler(self, SignalProcess, self.__on_signal_process),
+                _targeted_handler(self, ProcessStdin, self.__on_process_stdin),
+                OnProcessIO(target_action=self, on_stdout=self.__on_output_event,
+                            on_stderr=self.__on_output_event),
+                OnProcessExit(target_action=self, on_exit=self.__on_exit),
+                OnProcessExit(target_action=self,
+                              on_exit=lambda event, context: self.__output_handler.flush()),
+                OnShutdown(on_shutdown=self.__on_shutdown)):
+            context.register_event_handler(handler)
         loop = context.asyncio_loop
         assert loop is not None, 'ExecuteProcess needs a running LaunchService'
         self.__future = loop.create_future()
@@ -296,13 +298,14 @@ class ExecuteProcess(Action):
                      spawning: asyncio.Future) -> None:
         error = spawning.exception()
         if error is not None:
-            self.__logger.error(f'exception occurred while executing process: {error}')
+            self.__logger.error('exception occurred while executing process:\n'
+                                + ''.join(traceback.format_exception(error)))
             self.__complete()
             return
         self.__process = process
         process.attach()
         self.__logger.info(f'process started with pid [{process.pid}]')
-        context.emit_event_sync(ProcessStarted(**self.__event_fields()))
+        context._emit_event(ProcessStarted(**self.__event_fields()))
         if self.__stop_requested is not None:  # shutdown came while the process was starting
             self.__stop(context, self.__stop_requested)
 
@@ -314,15 +317,19 @@ class ExecuteProcess(Action):
 
     # --- output ---------------------------------------------------------------
     def __on_output(self, fd: int, data: bytes) -> None:
-        assert self.__context is not None and self.__output_handler is not None
-        self.__context.emit_event_sync(ProcessIO(text=data, fd=fd, **self.__event_fields()))
-        self.__output_handler.write(fd, data)
+        """Emit what the process wrote; it is printed and logged when the event is handled."""
+        assert self.__context is not None
+        event_type = ProcessStdout if fd == 1 else ProcessStderr
+        self.__context.emit_event_sync(event_type(text=data, **self.__event_fields()))
+
+    def __on_output_event(self, event: ProcessStdout | ProcessStderr) -> None:
+        assert self.__output_handler is not None
+        self.__output_handler.write(event.fd, event.text)
 
     # --- exit, respawn, shutdown ------------------------------------------------
     def __on_process_exit(self, returncode: int) -> None:
         context = self.__context
         assert context is not None and self.__process is not None
-        self.__output_handler.flush()
         for timer in self.__timers:
             timer.cancel()
         self.__timers.clear()
@@ -332,7 +339,7 @@ class ExecuteProcess(Action):
         else:
             self.__logger.error(f'process has died [pid {pid}, exit code {returncode}, '
                                 f"cmd '{' '.join(self.__description.final_cmd)}'].")
-        context.emit_event_sync(ProcessExited(returncode=returncode, **self.__event_fields()))
+        context._emit_event(ProcessExited(returncode=returncode, **self.__event_fields()))
         if self.__should_respawn(context):
             self.__respawn_count += 1
             delay = self.__respawn_delay or 0.0
@@ -356,26 +363,30 @@ class ExecuteProcess(Action):
         self.__start(self.__context)
 
     def __complete(self) -> None:
-        context = self.__context
-        if context is not None and self.__events_handler in context._event_handlers:
-            context.unregister_event_handler(self.__events_handler)
         if self.__future is not None and not self.__future.done():
             self.__future.set_result(None)
 
-    def _handle_event(self, event: Event, context: LaunchContext) -> None:
-        """React to Shutdown / ShutdownProcess / SignalProcess / ProcessStdin."""
-        if isinstance(event, Shutdown):
-            send_sigint = not event.due_to_sigint or context.noninteractive
-            self.__shutdown(context, send_sigint)
-        elif isinstance(event, ShutdownProcess):
-            self.__shutdown(context, True)
-        elif isinstance(event, SignalProcess):
-            if self.__process is not None and self.__process.running:
-                self.__logger.info(f"sending signal '{event.signal_name}' to process"
-                                   f'[{self.__final_name}]')
-                self.__process.send_signal(event.signal)
-        elif isinstance(event, ProcessStdin) and self.__process is not None:
-            self.__process.write_stdin(event.text)
+    def __on_shutdown(self, event: Shutdown, context: LaunchContext) -> None:
+        self.__shutdown(context, not event.due_to_sigint or context.noninteractive)
+
+    def __on_shutdown_process(self, context: LaunchContext) -> None:
+        self.__shutdown(context, True)
+
+    def __on_signal_process(self, context: LaunchContext) -> None:
+        event: SignalProcess = context.locals.event
+        if self.__process is None:
+            return
+        if not self.__process.running:
+            # Jazzy's words ('not set'), seen with `ros2 launch -d` when the process was
+            # stopped by the group's Ctrl-C before its SIGINT event was handled.
+            self.__logger.debug(f"signal '{event.signal_name}' not set to "
+                                f"'{self.__final_name}' because it is already closing")
+            return
+        self.__signal(event.signal)
+
+    def __on_process_stdin(self, context: LaunchContext) -> None:
+        if self.__process is not None:
+            self.__process.write_stdin(context.locals.event.text)
 
     def __shutdown(self, context: LaunchContext, send_sigint: bool) -> None:
         if self.__shutdown_requested:
@@ -396,8 +407,9 @@ class ExecuteProcess(Action):
         self.__stop_requested = None
         if self.__process is None or not self.__process.running:
             return
-        if send_sigint:
-            self.__signal(signal.SIGINT)
+        if send_sigint:  # as in Jazzy, through a SignalProcess event (`ros2 launch -d` shows it)
+            context.emit_event_sync(SignalProcess(signal_number=signal.SIGINT,
+                                                  process_matcher=matches_action(self)))
         sigterm_timeout = _perform(context, self.__sigterm_timeout)
         sigkill_timeout = _perform(context, self.__sigkill_timeout)
         term_after = float(sigterm_timeout)

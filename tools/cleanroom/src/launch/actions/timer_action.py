@@ -8,10 +8,10 @@ from typing import TYPE_CHECKING
 from ..action import Action
 from ..conditions.evaluate_condition_expression import evaluate_condition_expression
 from ..event_handler import EventHandler
-from ..event_handlers.on_shutdown import OnShutdown
-from ..events import TimerEvent
+from ..events import Shutdown, TimerEvent
 from ..launch_description_entity import LaunchDescriptionEntity
 from ..utilities import normalize_to_list_of_substitutions, perform_substitutions
+from .opaque_function import OpaqueFunction
 from .scope_actions import (
     PopEnvironment,
     PopLaunchConfigurations,
@@ -126,14 +126,14 @@ class TimerAction(Action):
             cancel = evaluate_condition_expression(
                 context, normalize_to_list_of_substitutions(cancel))
         if cancel:
-            context.register_event_handler(OnShutdown(
-                on_shutdown=lambda event, ctx: self.__cancel_in(ctx, handler),
-                handle_once=True))
+            context.register_event_handler(EventHandler(  # an EventHandler, as Jazzy's
+                matcher=lambda event: isinstance(event, Shutdown),
+                entities=OpaqueFunction(function=lambda ctx: self.__cancel_in(ctx, handler))))
 
         def fire() -> None:
             if self.__canceled:
                 return
-            context.emit_event_sync(TimerEvent(timer_action=self))
+            context._emit_event(TimerEvent(timer_action=self))
             if not self.__future.done():
                 self.__future.set_result(None)
         self.__handle = loop.call_later(period, fire)
