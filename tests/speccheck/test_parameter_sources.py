@@ -27,6 +27,7 @@ nodes:
     parameters:
       update_rate: {type: double, value: 15.0}
       sensors.lidar.topic: {type: string, value: rear_scan}
+      enabled_sensors: {type: string_array, value: [lidar]}
 topics:
   /robot1/scan:
     subscribers: [/robot1/filter]
@@ -53,6 +54,8 @@ def test_every_parameter_source_is_followed(report):
     assert window == 'set to 7 (from SetParametersFromFile params.yaml key /robot1/filter)'
     [(_, topic)] = found(report, 'node /robot2/controller: parameter sensors.lidar.topic')
     assert topic == "set to 'rear_scan' (from params.yaml key /**/controller)"
+    [(_, sensors)] = found(report, 'node /robot2/controller: parameter enabled_sensors')
+    assert sensors == "set to ['lidar'] (from the Node's parameters)"  # a Parameter(...)
     [(status, wiring)] = found(report, 'topic /robot1/scan: subscriber /robot1/filter')
     assert (status, wiring) == (Status.MET, 'remap distance:=/robot1/scan gives /robot1/scan')
 
@@ -62,8 +65,9 @@ def test_scoped_file_and_sim_time_stay_in_their_group(sourced):
     lidar, _, controller = system.nodes
     assert lidar.parameters()['use_sim_time'].value is True
     # the controller is outside the group: no use_sim_time, and only the keys of its own
-    # file that match /robot2/controller
-    assert set(controller.parameters()) == {'update_rate', 'sensors.lidar.topic'}
+    # file that match /robot2/controller, and its Parameter
+    assert set(controller.parameters()) == {'update_rate', 'sensors.lidar.topic',
+                                            'enabled_sensors'}
 
 
 def test_file_keys_match_like_ros(tmp_path):

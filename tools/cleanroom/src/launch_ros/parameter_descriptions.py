@@ -51,9 +51,6 @@ class ParameterValue:
         self.__evaluated = evaluate_value(context, self.__value, self.__value_type)
         return self.__evaluated
 
-    def __repr__(self) -> str:
-        return f'ParameterValue({self.__value!r}, value_type={self.__value_type!r})'
-
 
 class Parameter:
     """One named parameter; given to a node it becomes `-p name:=value`."""
@@ -78,9 +75,6 @@ class Parameter:
     def evaluate(self, context: LaunchContext) -> tuple[str, Any]:
         name = self.__name if isinstance(self.__name, str) else perform_text(context, self.__name)
         return name, self.__value.evaluate(context)
-
-    def __repr__(self) -> str:
-        return f'Parameter({self.__name!r}, {self.__value!r})'
 
 
 class ParameterFile:
@@ -140,9 +134,6 @@ class ParameterFile:
         if self.__created is not None:
             remove_temporary_file(self.__created)
             self.__created = None
-
-    def __repr__(self) -> str:
-        return f'ParameterFile({self.__param_file!r}, allow_substs={self.__allow_substs!r})'
 
 
 def _contains_substitution(value: Any) -> bool:

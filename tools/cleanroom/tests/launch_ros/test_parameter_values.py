@@ -1,6 +1,10 @@
 """Parameter typing: YAML 1.1 for substitution text, Python types kept (goldens 02, 07, 13, 28)."""
 
 import pytest
+from launch import LaunchContext
+from launch.substitutions import TextSubstitution
+from launch_ros.parameter_descriptions import Parameter, ParameterFile, ParameterValue
+from launch_ros.utilities import evaluate_parameters, normalize_parameters
 from launch_ros.utilities.parameter_values import (
     coerce_text,
     coerce_value,
@@ -74,3 +78,23 @@ def test_flatten_parameters_dotted_names():
 def test_format_parameter_argument_uses_python_rendering():
     assert format_parameter_argument('use_sim_time', True) == 'use_sim_time:=True'
     assert format_parameter_argument('level', 3) == 'level:=3'
+
+
+def test_normalized_and_evaluated_parameters_have_jazzys_shapes():
+    """Observed on Jazzy (launch_ros 0.26): tuples all the way, a plain list becomes a
+    tuple, a typed one stays the list YAML makes, a Parameter is handed on as itself,
+    an empty list is refused (its items have no type), and object's own reprs."""
+    context = LaunchContext()
+    normalized = normalize_parameters([{'a': ['lidar'], 'd': {'e': [1.0]}, 'f': 3}])
+    assert isinstance(normalized, tuple)
+    assert evaluate_parameters(context, normalized) == ({'a': ('lidar',), 'd.e': (1.0,), 'f': 3},)
+    typed = ParameterValue(TextSubstitution(text='[1, 2]'), value_type=list[int])
+    assert evaluate_parameters(context, normalize_parameters([{'v': typed}])) == ({'v': [1, 2]},)
+    parameter = Parameter('z', 5)
+    assert evaluate_parameters(context, normalize_parameters([parameter])) == (parameter,)
+    with pytest.raises(TypeError, match=r"^Expected 'value' to be one of \[<class 'float'>, "
+                       r".*but got '\(\)' of type '<class 'tuple'>'$"):
+        evaluate_parameters(context, normalize_parameters([{'h': []}]))
+    for described in (typed, parameter, ParameterFile('/tmp/x.yaml')):
+        assert repr(described).startswith(f'<launch_ros.parameter_descriptions.'
+                                           f'{type(described).__name__} object at 0x')

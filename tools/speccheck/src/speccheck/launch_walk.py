@@ -33,6 +33,7 @@ from launch.actions import (
 )
 from launch.launch_description_sources import AnyLaunchDescriptionSource
 from launch.utilities import normalize_to_list_of_substitutions, perform_substitutions
+from launch_ros.parameter_descriptions import Parameter
 from launch_ros.utilities import (
     evaluate_parameters,
     make_namespace_absolute,
@@ -342,6 +343,9 @@ class _Walker:
                                  for name, value in item.items()]
         elif isinstance(item, ParameterSetting):
             planned.settings.append(item)
+        elif isinstance(item, Parameter):  # evaluate_parameters hands a Parameter on as is
+            name, value = item.evaluate(self.context)
+            planned.settings.append(ParameterSetting(name, value, "the Node's parameters", True))
         elif isinstance(item, tuple) and item and item[0] == 'file':
             self._add_file(planned, item[1], origin_prefix)
         elif isinstance(item, (str, Path)):

@@ -17,6 +17,7 @@ from launch.logging import get_logger
 from launch.substitutions import LocalSubstitution
 from launch.utilities import normalize_to_list_of_substitutions
 
+from .. import parameter_descriptions as descriptions
 from ..substitutions import ExecutableInPackage
 from ..utilities.command_line import (
     ParamArg,
@@ -145,8 +146,8 @@ class Node(ExecuteProcess):
             if isinstance(item, dict):
                 path = write_parameters_file(self._parameter_file_key(name, namespace), item)
                 entries.append(ParamFileArg(path))
-            elif isinstance(item, tuple):
-                entries.append(ParamArg(*item))
+            elif isinstance(item, descriptions.Parameter):
+                entries.append(ParamArg(*item.evaluate(context)))
             else:
                 checked = self._checked_file(str(item))
                 if checked is not None:

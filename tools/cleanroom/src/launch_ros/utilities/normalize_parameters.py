@@ -49,8 +49,9 @@ def normalize_parameter_dict(parameters: Mapping[Any, Any],
     return normalized
 
 
-def normalize_parameters(parameters: Sequence[Any]) -> list[NormalizedParameter]:
-    """Normalize the `parameters` argument of Node (see the module docstring)."""
+def normalize_parameters(parameters: Sequence[Any]) -> tuple[NormalizedParameter, ...]:
+    """Normalize the `parameters` argument of Node (see the module docstring); a
+    tuple, as Jazzy returns."""
     if isinstance(parameters, (str, Mapping)) or not isinstance(parameters, Sequence):
         raise TypeError(
             f"'parameters' must be a list of files, dicts or Parameter, got {parameters!r}")
@@ -66,4 +67,4 @@ def normalize_parameters(parameters: Sequence[Any]) -> list[NormalizedParameter]
             raise TypeError(
                 f"'parameters' entries must be a parameter file path, a dict or a "
                 f'Parameter, got {entry!r} of type {type(entry).__name__}')
-    return normalized
+    return tuple(normalized)
