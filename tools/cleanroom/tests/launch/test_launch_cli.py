@@ -188,3 +188,17 @@ def test_a_killed_run_takes_its_child_along(cli_env):
         if proc.poll() is None:
             os.killpg(proc.pid, signal.SIGKILL)
             proc.communicate()
+
+
+def test_choices_are_appended_to_a_given_description():
+    """As Jazzy's --show-args shows them (observed: even an empty description gets them)."""
+    from launch.actions import DeclareLaunchArgument
+
+    def described(**given):
+        return DeclareLaunchArgument('x', default_value='true', choices=['true', 'false'],
+                                     **given).description
+
+    assert described(description='Start it') == "Start it. Valid choices are: ['true', 'false']"
+    assert described() == "One of: ['true', 'false']"
+    assert described(description='') == ". Valid choices are: ['true', 'false']"
+    assert DeclareLaunchArgument('y', description='Plain').description == 'Plain'

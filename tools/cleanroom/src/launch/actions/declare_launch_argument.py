@@ -41,6 +41,9 @@ class DeclareLaunchArgument(Action):
         if description is None:
             description = f'One of: {self.__choices}' if self.__choices is not None \
                 else 'no description given'
+        elif self.__choices is not None:
+            # Jazzy appends the choices to a given description, even an empty one.
+            description += f'. Valid choices are: {self.__choices}'
         self.__description = description
         # Set by LaunchDescription.get_launch_arguments(): declared under a condition.
         self._conditionally_included = False
