@@ -1,5 +1,6 @@
 """When the probe judges a launch to be up: not before a launch that pauses
-between its processes has started the expected nodes (on a fake clock)."""
+between its processes has started the expected nodes (on a fake clock); and
+a launch that should have refused to start is stopped at its first process."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -46,7 +47,7 @@ class _Launch:
 
 
 def _probe(monkeypatch, schedule: list[tuple[float, str, str | None]],
-           expected: tuple[str, ...]) -> tuple[launch_probe.LaunchProbe, float]:
+           expected: tuple[str, ...], **options: bool) -> tuple[launch_probe.LaunchProbe, float]:
     clock = _Clock()
     running = _Launch(clock, schedule)
     monkeypatch.setattr(launch_probe, 'time', clock)
@@ -56,7 +57,7 @@ def _probe(monkeypatch, schedule: list[tuple[float, str, str | None]],
                         lambda: GraphSnapshot(tuple(sorted(running.nodes())), {}))
     package = StudentPackage(Path('/nowhere'), 'pkg')
     monkeypatch.setattr(StudentPackage, 'environment', lambda self: {})
-    run = launch_probe.probe(package, 'bringup.launch.py', expected, timeout=60)
+    run = launch_probe.probe(package, 'bringup.launch.py', expected, timeout=60, **options)
     return run, clock.now
 
 
@@ -86,3 +87,11 @@ def test_without_expected_nodes_a_short_settle_suffices(monkeypatch):
     run, at = _probe(monkeypatch, _started(0.0, 'turtlesim-1', 'turtlesim'), ())
     assert run.nodes == ('/turtlesim',)
     assert at < 0.2 + 2 * launch_probe.PROCESSES_SETTLED
+
+
+def test_until_first_process_stops_at_the_first_process_without_a_graph(monkeypatch):
+    run, at = _probe(monkeypatch, SLOW_INCLUDE, ('/turtlesim', '/controller'),
+                     until_first_process=True)
+    assert run.processes == ['turtlesim-1']
+    assert run.snapshot is None and not run.exited_by_itself
+    assert at < 0.2  # before its node logged, long before the whole launch is up

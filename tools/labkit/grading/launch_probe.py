@@ -7,7 +7,8 @@ this book logs a line as it starts (`[process-N] [INFO] [t] [node]: ...`).
 The probe waits until every announced process has logged or ended and the
 nodes they named are in the graph (at once if that includes every expected
 node, else once no new process was announced for a moment), or until the
-launch exits, or `timeout` runs out.
+launch exits, or `timeout` runs out.  A launch that should refuse to start
+needs no such wait: `until_first_process` stops it at its first process.
 """
 from __future__ import annotations
 
@@ -102,12 +103,17 @@ def _launch_is_up(lines: list[str], present: set[str]) -> bool:
 
 def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[str] = (),
           arguments: Mapping[str, Any] | None = None, timeout: float = 30.0,
-          inspect: Callable[[GraphSnapshot], Any] | None = None) -> LaunchProbe:
+          inspect: Callable[[GraphSnapshot], Any] | None = None,
+          until_first_process: bool = False) -> LaunchProbe:
     """Start `ros2 launch <package> <launch_file> [arguments]`, wait until it is up
     (see the module docstring), look at the graph, stop it with Ctrl-C.
 
     `inspect(snapshot)` runs while the launch is still up (e.g. to read
     parameters with labkit.read_parameters); its result is `.inspected`.
+    With `until_first_process`, the launch is stopped as soon as it announces a
+    process, with no graph read: for a launch that must refuse its arguments, one
+    process started already proves it did not, and waiting for a whole system
+    to come up would only cost time.
     """
     expected = set(expected_nodes)
     running = launch(package.name, launch_file, launch_arguments=arguments or {},
@@ -119,6 +125,8 @@ def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[st
         while running.poll() is None and time.monotonic() < deadline:
             lines = running.lines
             started = read_log(lines)[0]
+            if until_first_process and started:
+                break
             if started != last_started:
                 last_started, steady_since = started, time.monotonic()
             present = set(observer.node_names())
@@ -129,7 +137,7 @@ def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[st
                 break
             time.sleep(0.1)
         exited = running.poll() is not None
-        snapshot = None if exited else graph()
+        snapshot = None if exited or until_first_process else graph()
         inspected = inspect(snapshot) if inspect and snapshot else None
     finally:
         returncode = running.stop()
