@@ -5,16 +5,19 @@ sim.launch.py and robot.launch.py for three robots, turtle3 the inspector
 with a site layer of its own, and an argument `shift` that selects a
 parameter layer.  The check grades the running system, as a terminal would
 start it: one launch for the day shift and one for the night shift (each
-reads the nine values that make each robot itself while the launch is up),
-one with a shift that does not exist (it must be refused, naming the
-allowed values), then the student's spec with `speccheck live` against
-their own system (it must pass) and against the capstone with three
-ordinary robots (it must fail: turtle3 is no inspector there).
+reads the nine values that make each robot itself while the launch is up,
+and the day shift is also checked against the student's spec with
+`speccheck live`: it must pass), one with a shift that does not exist (it
+must be refused, naming the allowed values), then the spec against the
+capstone with three ordinary robots (it must fail: turtle3 is no inspector
+there).  Each system is started once: the capstone's 19 processes take most
+of the check's time on a loaded machine.
 """
 from __future__ import annotations
 
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -117,9 +120,18 @@ def _same(got: Any, want: Any) -> bool:
     return isinstance(got, float) and math.isclose(got, want, abs_tol=1e-9)
 
 
+@dataclass(frozen=True)
+class Shift:
+    """What the check takes from one shift's launch while it is up."""
+
+    values: dict[str, dict[str, Any] | str]  # read_values
+    #: the student's spec against it (the day shift, once its nodes all run), else None
+    spec: spec_run.SpecRun | None = None
+
+
 def _robot_values(verdict: Verdict, run: LaunchProbe, robot: str, shift: str) -> None:
     """One requirement per robot and shift: every value of `expected` as the brief says."""
-    read = run.inspected or {}
+    read = run.inspected.values if isinstance(run.inspected, Shift) else {}
     wrong = []
     for value in expected(robot, shift):
         node = f'/{robot}/{value.node}'
@@ -151,20 +163,32 @@ def shown_shift(shift: str) -> str:
     return 'the default shift (day)' if shift == 'day' else f'shift:={shift}'
 
 
+def _inspect(package: StudentPackage, shift: str) -> Callable[[GraphSnapshot], Shift]:
+    """probe()'s `inspect` for `shift`: its values, and for the day shift the student's
+    spec against the running system (no second launch of the same 19 processes)."""
+    def inspect(snapshot: GraphSnapshot) -> Shift:
+        values = read_values(snapshot)
+        judged = shift == 'day' and (package.source / SPEC).is_file() \
+            and set(EXPECTED_NODES) <= set(snapshot.nodes)  # else no verdict comes to it
+        return Shift(values, _spec_against_running(package) if judged else None)
+    return inspect
+
+
 def _shift(package: StudentPackage, shift: str) -> LaunchProbe:
     arguments = {} if shift == 'day' else {'shift': shift}
     return probe(package, LAUNCH_FILE, EXPECTED_NODES, arguments=arguments,
-                 timeout=STARTUP_GUARD, inspect=read_values)
+                 timeout=STARTUP_GUARD, inspect=_inspect(package, shift))
 
 
 def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
-    run = probe(package, LAUNCH_FILE, EXPECTED_NODES, arguments={'shift': BAD_SHIFT},
-                timeout=STARTUP_GUARD)
+    """Stopped at its first process, if any: that alone shows the shift was not refused."""
+    run = probe(package, LAUNCH_FILE, arguments={'shift': BAD_SHIFT}, timeout=STARTUP_GUARD,
+                until_first_process=True)
     errors = run.launch_errors()
     text = ' '.join(errors)
     names_choices = all(re.search(rf'\b{name}\b', text) for name in ('day', 'night'))
     if not run.exited_by_itself or run.processes:
-        verdict.fail(f'`{run.command}` started {len(run.processes)} processes instead of '
+        verdict.fail(f'`{run.command}` started processes instead of '
                      f'refusing shift:={BAD_SHIFT} (N5): declare the argument with '
                      "choices=['day', 'night']")
         return
@@ -176,30 +200,41 @@ def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
                    + (' | '.join(errors) or ' | '.join(run.lines[-3:]) or 'nothing'))
 
 
+def _command(package: StudentPackage, words: list[str]) -> str:
+    """`speccheck live SPEC WORDS...`, as the student types it in their workspace."""
+    return ' '.join(['speccheck live', package.shown(package.source / SPEC), *words])
+
+
+def _spec_against_running(package: StudentPackage) -> spec_run.SpecRun:
+    """The student's spec against the system running now (the day shift's launch), as
+    `speccheck live SPEC` in a second terminal checks it; speccheck waits its discovery
+    grace for the nodes and endpoints the spec names, which the system already runs."""
+    return spec_run.run_speccheck(package, 'live', package.source / SPEC, [],
+                                  _command(package, []))
+
+
 def _speccheck(package: StudentPackage, target: list[str], system: str) -> spec_run.SpecRun:
-    """The student's spec against `target` (their system or the defect, which runs the
-    same nodes), running; a wait that ran out on the three robots' nodes is repeated
-    longer (spec_run.run_live)."""
-    return spec_run.run_live(
-        package, package.source / SPEC, target,
-        lambda words: ' '.join(['speccheck live',
-                                package.shown(package.source / SPEC), *words]),
-        EXPECTED_NODES.__contains__, system)
+    """The student's spec against `target` (the defect, which runs the same nodes as
+    their system), started by speccheck; a wait that ran out on the three robots' nodes
+    is repeated longer (spec_run.run_live)."""
+    return spec_run.run_live(package, package.source / SPEC, target,
+                             lambda words: _command(package, words),
+                             EXPECTED_NODES.__contains__, system)
 
 
-def _spec_passes(verdict: Verdict, package: StudentPackage) -> bool:
-    """The student's spec against their own system, started by speccheck (which waits
-    for the spec's nodes; checking a system started elsewhere could miss one that a
-    fresh process has not discovered yet)."""
+def _spec_passes(verdict: Verdict, package: StudentPackage, day: LaunchProbe) -> bool:
+    """The student's spec against their own system: the day shift, checked while its
+    probe had it up (Shift.spec)."""
     spec = package.source / SPEC
     if not spec.is_file():
         return verdict.fail(f'{package.shown(spec)} does not exist: write your spec there '
                             '(N6)').passed
-    run = _speccheck(package, ['--launch', package.name, LAUNCH_FILE], f'your {LAUNCH_FILE}')
+    run = day.inspected.spec if isinstance(day.inspected, Shift) else None
+    if run is None:  # the day shift was not up with all its nodes: said above
+        return verdict.fail(f'your spec was not run: `{day.command}` did not run all of '
+                            f'{len(EXPECTED_NODES)} nodes (N1)').passed
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
-    if run.unjudged:
-        return verdict.fail(run.unjudged).passed
     findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
     return verdict.expect(run.returncode == 0 and not run.failed,
                           f'your spec passes your running system ({run.summary})',
@@ -236,7 +271,7 @@ def check_night_shift(package: StudentPackage, verdict: Verdict) -> Verdict:
         for robot in ROBOTS:
             _robot_values(verdict, night, robot, 'night')
     _bad_shift_refused(verdict, package)
-    if _spec_passes(verdict, package):
+    if _spec_passes(verdict, package, day):
         _spec_catches_defect(verdict, package)
     return verdict
 
