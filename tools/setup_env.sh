@@ -45,6 +45,23 @@ make_venv_a_ros_prefix() {
   fi
 }
 
+# The wheels' Fast DDS can leave a node spinning for ever at shutdown (an
+# overflowed "wait forever" deadline; tools/ddsfix/forever_wait.c says why).
+# Build the LD_PRELOAD shim that textbook.isolation gives every ROS run, into
+# the venv, only with the wheels (a real ROS 2 is built for its own glibc and
+# needs none); rebuilt when its source changes, also when the rest is current.
+build_ddsfix() {
+  local src="$root/tools/ddsfix/forever_wait.c" lib="$venv/lib/ddsfix/libforever_wait.so"
+  [ "$USE_SYSTEM_ROS" = 0 ] || return 0
+  [ "$lib" -nt "$src" ] && return 0
+  mkdir -p "$(dirname "$lib")"
+  if "${CC:-cc}" -O2 -Wall -shared -fPIC -o "$lib.tmp" "$src" -ldl; then
+    mv "$lib.tmp" "$lib"
+  else
+    echo "setup: could not build $lib (a C compiler?): nodes may hang at shutdown" >&2
+  fi
+}
+
 # The browser test of the site (tests/site/test_browser.py) drives Debian's
 # chromium through chromedriver; install them when missing and we may.
 if ! command -v chromium >/dev/null 2>&1 || ! command -v chromedriver >/dev/null 2>&1; then
@@ -64,6 +81,7 @@ stamp_input="$(cat "$root/requirements/lock.txt" "$root/requirements/base.in" \
   "$root/tools/rclhelpers/pyproject.toml" "$root/tools/speccheck/pyproject.toml" "$0"; echo "system_ros=$USE_SYSTEM_ROS")"
 stamp="$(printf '%s' "$stamp_input" | sha256sum | cut -c1-16)"
 if [ -f "$venv/.setup-stamp" ] && [ "$(cat "$venv/.setup-stamp")" = "$stamp" ]; then
+  build_ddsfix
   exit 0
 fi
 
@@ -91,6 +109,7 @@ if [ "$USE_SYSTEM_ROS" = 0 ]; then
   "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/cleanroom"
   make_venv_a_ros_prefix
 fi
+build_ddsfix
 "$venv/bin/python" -m ipykernel install --sys-prefix --name python3 >/dev/null
 "$venv/bin/python" -m textbook.lab_kernel --install >/dev/null  # the book's kernel (make lab)
 echo "$stamp" > "$venv/.setup-stamp"

@@ -4,14 +4,18 @@ The ID is leased from ROS 2's own allocator, ``domain_coordinator``, through
 rclhelpers.domains (which the clean room's launch_test shares): the lease is
 held for as long as this object lives.  Every environment built from a lease
 also limits discovery to this machine and carries a unique token, which lets
-the reaper find exactly the processes that this run started.
+the reaper find exactly the processes that this run started.  Where the ROS 2
+stack is the PyPI wheels, it also preloads tools/ddsfix's shim, without which
+a node can hang for ever at shutdown (tools/ddsfix/forever_wait.c says why).
 """
 from __future__ import annotations
 
 import contextlib
 import os
+import sys
 import uuid
 from collections.abc import Iterable, Iterator
+from pathlib import Path
 
 try:
     from rclhelpers import domains
@@ -27,6 +31,20 @@ LEASE_VAR = 'TEXTBOOK_ROS_LEASE'
 _DISCOVERY_VARS = ('ROS_LOCALHOST_ONLY', 'ROS_STATIC_PEERS', 'ROS_DISCOVERY_SERVER',
                    'FASTRTPS_DEFAULT_PROFILES_FILE', 'FASTDDS_DEFAULT_PROFILES_FILE')
 
+#: The shim tools/setup_env.sh builds into a venv of the wheels (never into one
+#: under a real ROS 2, whose Fast DDS needs none): where it is missing, nothing
+#: is preloaded.
+DDSFIX = Path(sys.prefix) / 'lib' / 'ddsfix' / 'libforever_wait.so'
+
+
+def preload_ddsfix(preload: str) -> str:
+    """``preload`` (an LD_PRELOAD value) with the shim added if it was built, dropped if not."""
+    entries = [entry for entry in preload.replace(':', ' ').split()
+               if Path(entry).name != DDSFIX.name]
+    if DDSFIX.is_file():
+        entries.append(str(DDSFIX))
+    return ' '.join(entries)
+
 
 class DomainLease(domains.DomainLease):
     """A leased ROS_DOMAIN_ID, with the environment and token of a run inside it."""
@@ -35,18 +53,21 @@ class DomainLease(domains.DomainLease):
         super().__init__(domain_id, hold)
         self.token = f'{domain_id}-{os.getpid()}-{uuid.uuid4().hex[:12]}'
 
-    def env(self) -> dict[str, str]:
-        """The variables that put a process into this lease's private domain."""
+    def env(self, base: dict[str, str] | None = None) -> dict[str, str]:
+        """The variables that put a process into this lease's private domain (and
+        LD_PRELOAD: ``base``'s, default os.environ's, with the shim where built)."""
+        preload = preload_ddsfix((os.environ if base is None else base).get('LD_PRELOAD', ''))
         return {
             'ROS_DOMAIN_ID': str(self.domain_id),
             'ROS_AUTOMATIC_DISCOVERY_RANGE': 'LOCALHOST',
             LEASE_VAR: self.token,
+            **({'LD_PRELOAD': preload} if preload else {}),
         }
 
     def apply(self, base: dict[str, str]) -> dict[str, str]:
         """A copy of ``base`` isolated into this domain."""
-        env = {k: v for k, v in base.items() if k not in _DISCOVERY_VARS}
-        env.update(self.env())
+        env = {k: v for k, v in base.items() if k not in (*_DISCOVERY_VARS, 'LD_PRELOAD')}
+        env.update(self.env(base))
         return env
 
 
