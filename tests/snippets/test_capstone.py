@@ -27,7 +27,7 @@ from lifecycle_msgs.srv import GetState
 from textbook import paths, workspace
 
 from .._polling import wait_for
-from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
+from ._launch_log import ENDED, STARTED
 from ._turtlesim_client import SimClient, load_interfaces, load_turtlesim_interfaces
 from ._wiring import Wiring, settled_graph, wiring_of
 
@@ -40,8 +40,6 @@ load_interfaces(INSTALL, 'capstone_interfaces')
 
 from capstone_interfaces.srv import SetMode  # noqa: E402
 from turtlesim.msg import Pose  # noqa: E402
-
-pytestmark = DDS_SHUTDOWN_HANG  # sixteen nodes stop at once in each test
 
 PACKAGE = 'capstone_bringup'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'

@@ -21,15 +21,13 @@ import pytest
 from textbook import paths
 from textbook.myst import fences
 
-from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
+from ._launch_log import ENDED, STARTED
 from ._wiring import Wiring, settled_graph, wiring_of
 
 LESSON = paths.LESSONS / 'ch06/L3/11_one_system_three_formats.md'
 PACKAGE = 'my_robot_pkg'
 LAUNCH = paths.SNIPPETS / PACKAGE / 'launch'
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
-
-pytestmark = DDS_SHUTDOWN_HANG  # robot_controller hung in Fast DDS shutdown in CI, as in 6.8
 
 
 @dataclass(frozen=True)

@@ -20,10 +20,8 @@ import pytest
 from textbook import paths
 from textbook.myst import fences
 
-from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
+from ._launch_log import ENDED, STARTED
 from ._wiring import Wiring, settled_graph, wiring
-
-pytestmark = DDS_SHUTDOWN_HANG  # its launches stop up to six robot nodes at once
 
 LESSON = paths.LESSONS / 'ch06/L3/12_architecture_patterns.md'
 PACKAGE = 'robot_bringup'

@@ -24,7 +24,7 @@ from labkit.grading.student_package import StudentPackage
 from textbook import paths
 from textbook.myst import fences
 
-from ._launch_log import DDS_SHUTDOWN_HANG, ENDED, STARTED
+from ._launch_log import ENDED, STARTED
 from ._wiring import Wiring, in_namespace, nodes_in, settled_graph, wiring
 
 LESSON = paths.LESSONS / 'ch06/L3/13_configuration_management.md'
@@ -32,8 +32,6 @@ PACKAGE = 'rover_config'
 SOURCE = paths.SNIPPETS / PACKAGE
 HANG_GUARD = 30.0  # seconds; only stops a broken test from hanging, never a speed limit
 NODES = ('sensor_publisher', 'data_processor', 'robot_controller')
-
-pytestmark = DDS_SHUTDOWN_HANG  # robot_controller hung in Fast DDS shutdown in CI, as in 6.8
 
 
 @dataclass(frozen=True)

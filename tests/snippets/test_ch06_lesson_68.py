@@ -22,10 +22,7 @@ import speccheck
 from textbook import paths
 
 from ._drafts import assert_draft_is_the_replys_code_block
-from ._launch_log import DDS_SHUTDOWN_HANG
 from ._shown_snippets import launch_files_included_by
-
-pytestmark = DDS_SHUTDOWN_HANG  # a controller may hang in Fast DDS shutdown, as in CI
 
 LESSON = paths.LESSONS / 'ch06/L2/08_requirements_to_launch_file.md'
 DRAFTS = paths.SNIPPETS / 'ai_drafts'

@@ -16,10 +16,7 @@ import labkit
 import speccheck
 from textbook import paths
 
-from ._launch_log import DDS_SHUTDOWN_HANG
 from ._shown_snippets import launch_files_included_by
-
-pytestmark = DDS_SHUTDOWN_HANG  # fifteen nodes stop at once, as in test_capstone
 
 LESSON = paths.LESSONS / 'ch07/L4/01_specification.md'
 PACKAGE = 'capstone_bringup'

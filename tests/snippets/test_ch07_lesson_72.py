@@ -27,10 +27,8 @@ from textbook import paths
 
 from .._polling import wait_for
 from ._drafts import assert_draft_is_the_replys_code_block
-from ._launch_log import DDS_SHUTDOWN_HANG, ENDED
+from ._launch_log import ENDED
 from ._shown_snippets import launch_files_included_by
-
-pytestmark = DDS_SHUTDOWN_HANG  # up to nineteen nodes stop at once, as in test_capstone
 
 LESSON = paths.LESSONS / 'ch07/L4/02_building_the_bringup.md'
 PACKAGE = 'capstone_bringup'

@@ -30,10 +30,7 @@ from labkit.checks.ch07_03 import BrokenCapstone, broken_prefix, installed_share
 from textbook import paths
 
 from .._polling import wait_for
-from ._launch_log import DDS_SHUTDOWN_HANG
 from ._shown_snippets import launch_files_included_by
-
-pytestmark = DDS_SHUTDOWN_HANG  # the capstone's nodes stop at once
 
 LESSON = paths.LESSONS / 'ch07/L4/03_testing_and_operating.md'
 PACKAGE = 'capstone_bringup'
