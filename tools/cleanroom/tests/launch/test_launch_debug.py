@@ -168,3 +168,17 @@ def test_a_service_made_after_a_debug_one_logs_at_info(run_launch):
     output = run_launch([LogInfo(msg='two')]).output
     assert '[DEBUG]' not in output
     assert '[INFO] [launch]: Default logging verbosity is set to INFO' in output
+
+
+def test_an_unfinished_last_line_is_printed_after_the_exit(ros2, tmp_path):
+    """Jazzy (4 of 4 runs, with and without -d): a last line without a newline comes after
+    the exit line; whole lines come in order (before the exit line in most runs)."""
+    lines = _launch_d(ros2, tmp_path, """
+from launch.actions import ExecuteProcess
+def generate_launch_description():
+    return LaunchDescription([ExecuteProcess(cmd=['sh', '-c', 'echo one; printf two'],
+                                             output='screen')])
+""")
+    exited = _index(lines, r'\[INFO\] \[sh-1\]: process has finished cleanly \[pid \d+\]')
+    assert lines.index('[sh-1] one') < lines.index('[sh-1] two')
+    assert exited < lines.index('[sh-1] two')

@@ -127,6 +127,8 @@ class ExecuteProcess(Action):
         self.__process: RunningProcess | None = None
         self.__future: asyncio.Future | None = None
         self.__shutdown_requested = False
+        self.__unhandled_output = 0  # output events emitted, not yet handled
+        self.__exit_code: int | None = None  # an exit waiting for them
         self.__stop_requested: bool | None = None
         self.__timers: list[asyncio.TimerHandle] = []
         self.__respawn_handle: asyncio.TimerHandle | None = None
@@ -256,8 +258,7 @@ class ExecuteProcess(Action):
                 OnProcessIO(target_action=self, on_stdout=self.__on_output_event,
                             on_stderr=self.__on_output_event),
                 OnProcessExit(target_action=self, on_exit=self.__on_exit),
-                OnProcessExit(target_action=self,
-                              on_exit=lambda event, context: self.__output_handler.flush()),
+                OnProcessExit(target_action=self, on_exit=self.__respawn_or_complete),
                 OnShutdown(on_shutdown=self.__on_shutdown)):
             context.register_event_handler(handler)
         loop = context.asyncio_loop
@@ -320,16 +321,25 @@ class ExecuteProcess(Action):
         """Emit what the process wrote; it is printed and logged when the event is handled."""
         assert self.__context is not None
         event_type = ProcessStdout if fd == 1 else ProcessStderr
+        self.__unhandled_output += 1
         self.__context.emit_event_sync(event_type(text=data, **self.__event_fields()))
 
     def __on_output_event(self, event: ProcessStdout | ProcessStderr) -> None:
         assert self.__output_handler is not None
         self.__output_handler.write(event.fd, event.text)
+        self.__unhandled_output -= 1
+        if self.__unhandled_output == 0 and self.__exit_code is not None:
+            self.__on_process_exit(self.__exit_code)
 
     # --- exit, respawn, shutdown ------------------------------------------------
     def __on_process_exit(self, returncode: int) -> None:
+        """Log the exit once the lines the process wrote are printed (as Jazzy mostly shows it)."""
         context = self.__context
         assert context is not None and self.__process is not None
+        if self.__unhandled_output:
+            self.__exit_code = returncode  # done by the last output event's handler
+            return
+        self.__exit_code = None
         for timer in self.__timers:
             timer.cancel()
         self.__timers.clear()
@@ -340,6 +350,11 @@ class ExecuteProcess(Action):
             self.__logger.error(f'process has died [pid {pid}, exit code {returncode}, '
                                 f"cmd '{' '.join(self.__description.final_cmd)}'].")
         context._emit_event(ProcessExited(returncode=returncode, **self.__event_fields()))
+
+    def __respawn_or_complete(self, event: ProcessExited, context: LaunchContext) -> None:
+        """Handling its exit event: print an unfinished last line (after the exit line,
+        as in Jazzy), then start the process again or be done."""
+        self.__output_handler.flush()
         if self.__should_respawn(context):
             self.__respawn_count += 1
             delay = self.__respawn_delay or 0.0
