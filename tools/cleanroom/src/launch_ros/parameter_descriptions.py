@@ -14,6 +14,7 @@ from launch import LaunchContext, Substitution
 from launch.utilities import normalize_to_list_of_substitutions
 
 from ._support.file_substitutions import expand_file_substitutions
+from ._support.launch_cleanup import ensure_cleanup_registered
 from ._support.param_files import remove_temporary_file, write_temporary_file
 from ._support.parameter_values import coerce_value, plain_python_value
 from ._support.substitution_values import evaluate_value, is_substitution_text, perform_text
@@ -125,6 +126,7 @@ class ParameterFile:
             return self.__evaluated
         with open(source) as handle:
             text = expand_file_substitutions(context, handle.read(), source)
+        ensure_cleanup_registered(context)  # removes the file when this launch ends
         self.__created = write_temporary_file(text, owner=id(context))
         self.__evaluated = Path(self.__created)
         return self.__evaluated

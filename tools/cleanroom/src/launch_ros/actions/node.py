@@ -27,7 +27,6 @@ from ..utilities.command_line import (
     ros_specific_arguments,
 )
 from ..utilities.evaluate_parameters import evaluate_parameters
-from ..utilities.launch_cleanup import ensure_cleanup_registered
 from ..utilities.namespace_utils import full_node_namespace, fully_qualified_name
 from ..utilities.normalize_parameters import normalize_parameters
 from ..utilities.normalize_remap_rule import evaluate_remap_rules, normalize_remap_rules
@@ -183,7 +182,6 @@ class Node(ExecuteProcess):
                                   for arg in self.__described_name_args]
 
     def execute(self, context: LaunchContext) -> list[Any] | None:
-        ensure_cleanup_registered(context)
         tail = self._ros_command_tail(context)
         self.cmd[:] = self.__base_cmd + [normalize_to_list_of_substitutions(arg) for arg in tail]
         return super().execute(context)
