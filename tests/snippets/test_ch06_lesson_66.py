@@ -80,9 +80,10 @@ def test_commands_run_with_their_folder_environment_and_handlers(ros_env):
     assert f'[system_info-1] {uname}' in lines, run.output()
     # shell=True expanded $ROBOT_NAME (additional_env) and $(pwd) (cwd)
     assert '[greeter-2] robot alpha works in /tmp' in lines, run.output()
-    # OnProcessIO turned the greeter's stdout into a LogInfo line
-    _in_order(lines, r'^\[greeter-2\] robot alpha',
-              r'^\[INFO\] \[launch\.user\]: greeter said: robot alpha works in /tmp$')
+    # OnProcessIO turned the greeter's stdout into a LogInfo line; as in Jazzy, the
+    # launch file's handler (the newest) runs before the one that prints the line
+    _in_order(lines, r'^\[INFO\] \[launch\.user\]: greeter said: robot alpha works in /tmp$',
+              r'^\[greeter-2\] robot alpha')
     # OnProcessExit without a target: one line per process, after its exit
     for process in ('system_info-1', 'greeter-2'):
         _in_order(lines, rf'^\[INFO\] \[{process}\]: process has finished cleanly',
@@ -137,8 +138,9 @@ def test_the_launch_shuts_down_when_the_critical_sensor_dies(ros_env):
     code = _wait_for_exit(run)
     lines = run.lines
     assert code == 0, run.output()
-    _in_order(lines, r'\[flaky_sensor\]: Lost contact with the sensor hardware',
-              r'^\[INFO\] \[launch\.user\]: The sensor reported a hardware fault$')
+    # the launch file's OnProcessIO runs before the handler that prints the line (Jazzy)
+    _in_order(lines, r'^\[INFO\] \[launch\.user\]: The sensor reported a hardware fault$',
+              r'\[flaky_sensor\]: Lost contact with the sensor hardware')
     _in_order(lines, r'\[flaky_sensor\]: Reading #4:',
               r'^\[ERROR\] \[flaky_sensor-1\]: process has died \[pid \d+, exit code 1, ',
               r'^\[INFO\] \[launch\.user\]: The sensor is gone: nothing works without it',

@@ -91,15 +91,15 @@ def test_book_kernel_runs_a_cell_in_the_book_environment_and_leaves_nothing(ws_i
         assert seen['ROS_DOMAIN_ID'] != os.environ['ROS_DOMAIN_ID']
         assert seen['ROS_AUTOMATIC_DISCOVERY_RANGE'] == 'LOCALHOST'
         assert seen['TEXTBOOK_ROS_LEASE'] not in (None, os.environ.get('TEXTBOOK_ROS_LEASE'))
-        # The snippets workspace sourced, labkit importable and satisfied.
-        book_package = str(paths.WORKSPACE / 'install' / 'my_robot_pkg')
+        # The working folder is a student workspace, as in the book's build: its own
+        # install/ (a copy of the book's build) sourced, labkit importable and satisfied.
+        workdir = Path(seen['cwd'])
+        assert workdir.parent == paths.RUNS
+        book_package = str(workdir / 'install' / 'my_robot_pkg')
         assert book_package in seen['AMENT_PREFIX_PATH'].split(os.pathsep)
         assert seen['ready'] is None
         assert seen['workspace'] == book_package
         assert Path(seen['labkit']).resolve() == Path(labkit.__file__).resolve()
-        # The working folder is a student workspace, as in the book's build.
-        workdir = Path(seen['cwd'])
-        assert workdir.parent == paths.RUNS
         assert 'my_robot_pkg' in seen['src']
         assert (workdir / 'src' / 'my_robot_pkg' / 'package.xml').is_file()
 
