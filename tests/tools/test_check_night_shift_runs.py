@@ -14,15 +14,14 @@ from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 from labkit.graph import GraphSnapshot
 
+from ._student_package import with_empty_spec
+
 PASSED = 'speccheck live: x against s\nPASSED: 19 met, 0 failed, 0 not checked\n'
 
 
 @pytest.fixture
 def package(tmp_path: Path) -> StudentPackage:
-    spec = tmp_path / 'src' / 'my_ws_exercises' / ch07_04.SPEC
-    spec.parent.mkdir(parents=True)
-    spec.write_text('nodes: {}\n')
-    return StudentPackage(tmp_path)
+    return with_empty_spec(tmp_path, ch07_04.SPEC)
 
 
 @pytest.fixture

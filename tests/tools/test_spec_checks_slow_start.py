@@ -15,6 +15,8 @@ from labkit.grading.spec_run import SpecRun
 from labkit.grading.student_package import StudentPackage
 from labkit.grading.verdict import Verdict
 
+from ._student_package import with_empty_spec
+
 CAPSTONE_3, CAPSTONE_2 = 'robot_count:=3', 'robot_count:=2'
 OTHER_CONFIG = ch07_01.DEFECT.name
 
@@ -62,10 +64,7 @@ class Speccheck:
 
 @pytest.fixture
 def package(tmp_path: Path) -> StudentPackage:
-    spec = tmp_path / 'src' / 'my_ws_exercises' / ch07_01.SPEC
-    spec.parent.mkdir(parents=True)
-    spec.write_text('nodes: {}\n')
-    return StudentPackage(tmp_path)
+    return with_empty_spec(tmp_path, ch07_01.SPEC)
 
 
 def grade(package: StudentPackage, speccheck: Speccheck,
