@@ -57,18 +57,39 @@ def stop_process(proc: subprocess.Popen, grace: float = 5.0) -> None:
     proc.wait()
 
 
-def _wait_for_the_daemon(node: str, env: dict[str, str], timeout: float = 15.0) -> None:
-    """With a daemon running, wait until it lists `node`, as a user re-runs `ros2 node
-    list` until a node they just started shows up (it answers with what it has seen)."""
+def _wait_for_the_daemon_listing(args: tuple[str, ...], expected: list[str],
+                                env: dict[str, str], timeout: float = 15.0) -> None:
+    """Wait until the running daemon's `ros2 ARGS` output holds every `expected` line,
+    as a user re-runs a listing until what they just started shows up (the daemon
+    answers with what discovery has brought it so far: nodes before their topics)."""
+    deadline = time.monotonic() + timeout
+    while True:
+        listed = subprocess.run([ROS2, *args], env=env, capture_output=True, text=True,
+                                check=False).stdout.splitlines()
+        missing = [line for line in expected if line not in listed]
+        if not missing:
+            return
+        assert time.monotonic() < deadline, f'the ros2 daemon never listed {missing}'
+        time.sleep(0.2)
+
+
+def _wait_for_the_daemon(node: str, env: dict[str, str]) -> None:
+    """With a daemon running, wait until it lists `node`."""
     status = subprocess.run([ROS2, 'daemon', 'status'], env=env, capture_output=True,
                             text=True, check=False)
-    if status.stdout.strip() != 'The daemon is running':
-        return
-    deadline = time.monotonic() + timeout
-    while node not in subprocess.run([ROS2, 'node', 'list', '-a'], env=env, capture_output=True,
-                                     text=True, check=False).stdout.split():
-        assert time.monotonic() < deadline, f'the ros2 daemon never listed {node}'
-        time.sleep(0.2)
+    if status.stdout.strip() == 'The daemon is running':
+        _wait_for_the_daemon_listing(('node', 'list', '-a'), [node], env)
+
+
+@pytest.fixture(scope='module')
+def daemon_listing(cli_env: dict[str, str]) -> Callable[..., None]:
+    """`daemon_listing(('topic', 'list'), ['/chatter'])`: start the module's daemon and
+    wait until that listing shows every expected line."""
+    def wait(args: tuple[str, ...], expected: list[str]) -> None:
+        subprocess.run([ROS2, 'daemon', 'start'], env=cli_env, capture_output=True,
+                       check=True)
+        _wait_for_the_daemon_listing(args, expected, cli_env)
+    return wait
 
 
 @pytest.fixture(scope='module')

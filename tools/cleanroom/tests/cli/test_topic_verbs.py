@@ -134,7 +134,7 @@ BEGIN = 'publisher: beginning loop\n'
 
 
 @pytest.fixture(scope='module')
-def graph(start_node, cli_env: dict[str, str]) -> Iterator[None]:
+def graph(start_node, daemon_listing, cli_env: dict[str, str]) -> Iterator[None]:
     """/chatter (String from the talker, Int32 from int_talker, heard by the listener),
     /cmd_vel (Twist) and the hidden /_hid, all up before the module's first listing."""
     extra = []
@@ -146,6 +146,11 @@ def graph(start_node, cli_env: dict[str, str]) -> Iterator[None]:
         assert proc.stdout.readline().startswith('ready '), f'{kind} did not start'
     for kind in ('talker', 'listener', 'twister'):
         start_node(kind)
+    daemon_listing(
+        ('topic', 'list', '-t', '--include-hidden-topics'),
+        ['/_hid [std_msgs/msg/String]',
+         '/chatter [std_msgs/msg/Int32, std_msgs/msg/String]',
+         '/cmd_vel [geometry_msgs/msg/Twist]'])
     try:
         yield
     finally:
