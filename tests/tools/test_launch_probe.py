@@ -95,3 +95,15 @@ def test_until_first_process_stops_at_the_first_process_without_a_graph(monkeypa
     assert run.processes == ['turtlesim-1']
     assert run.snapshot is None and not run.exited_by_itself
     assert at < 0.2  # before its node logged, long before the whole launch is up
+
+
+def test_a_node_whose_process_has_finished_is_not_waited_for(monkeypatch):
+    # The capstone's spawner logs as /turtle2/spawner, spawns, and exits: its node is
+    # never in the graph the probe reads, and the launch is up without it.
+    spawner = [(0.0, '[INFO] [spawner-1]: process started with pid [100]', None),
+               (0.1, '[spawner-1] [INFO] [0.1] [turtle2.spawner]: spawned turtle2', None),
+               (0.2, '[INFO] [spawner-1]: process has finished cleanly [pid 100]', None)]
+    run, at = _probe(monkeypatch, spawner + _started(0.3, 'turtlesim-2', 'turtlesim'),
+                     ('/turtlesim',))
+    assert run.nodes == ('/turtlesim',)
+    assert at < 2.0  # not the whole timeout
