@@ -92,6 +92,26 @@ def test_show_all_subprocesses_output(ros2, tmp_path):
     assert '[q-1] QUIET' in ros2('launch', str(launch_file), '-a').stdout.splitlines()
 
 
+def test_a_python_launch_file_is_loaded_as_jazzy_loads_it(cli_env, tmp_path):
+    # Observed on the reference: the module is `python_launch_file`, loaded by Python's
+    # SourceFileLoader from the path as given, not in sys.modules, and its bytecode is
+    # written to __pycache__/ next to the file (unless PYTHONDONTWRITEBYTECODE is set).
+    (tmp_path / 'probe.launch.py').write_text(
+        'import sys\n'
+        'from launch import LaunchDescription\n'
+        'print(__name__, __file__, type(__loader__).__name__, __name__ in sys.modules)\n'
+        'def generate_launch_description():\n'
+        '    return LaunchDescription([])\n')
+    env = {k: v for k, v in cli_env.items() if k != 'PYTHONDONTWRITEBYTECODE'}
+    result = subprocess.run([ROS2, 'launch', './probe.launch.py'], cwd=tmp_path, env=env,
+                            capture_output=True, text=True, stdin=subprocess.DEVNULL,
+                            timeout=30)
+    assert 'python_launch_file ./probe.launch.py SourceFileLoader False' in \
+        result.stdout.splitlines()
+    assert [p.name for p in (tmp_path / '__pycache__').iterdir()] == \
+        [f'probe.launch.{sys.implementation.cache_tag}.pyc']
+
+
 def test_launch_prefix(ros2, tmp_path):
     launch_file = tmp_path / 'prefixed.launch.py'
     launch_file.write_text(

@@ -1,14 +1,11 @@
 """Load a Python launch file and call its generate_launch_description()."""
 from __future__ import annotations
 
-import itertools
-import os
-import sys
+import importlib.machinery
+import importlib.util
 import types
 
 from ..launch_description import LaunchDescription
-
-_counter = itertools.count(1)
 
 
 class InvalidPythonLaunchFileError(Exception):
@@ -16,16 +13,12 @@ class InvalidPythonLaunchFileError(Exception):
 
 
 def load_python_launch_file_as_module(python_launch_file_path: str) -> types.ModuleType:
-    """Execute the file as a fresh module (no bytecode is written next to it)."""
-    stem = os.path.basename(python_launch_file_path).split('.')[0] or 'launch_file'
-    name = f'launch_file_{next(_counter)}_{stem}'
-    with open(python_launch_file_path, 'rb') as f:
-        source = f.read()
-    code = compile(source, python_launch_file_path, 'exec', dont_inherit=True)
-    module = types.ModuleType(name)
-    module.__file__ = python_launch_file_path
-    sys.modules[name] = module  # dataclasses and pickling look modules up by name
-    exec(code, module.__dict__)
+    """Execute the file as a fresh module named `python_launch_file`, with Python's own
+    source loader: as in Jazzy, it is not put in sys.modules, and its bytecode goes to
+    __pycache__/ next to the file as any imported module's would."""
+    loader = importlib.machinery.SourceFileLoader('python_launch_file', python_launch_file_path)
+    module = importlib.util.module_from_spec(importlib.util.spec_from_loader(loader.name, loader))
+    loader.exec_module(module)  # __file__ is the path as given, as in Jazzy
     return module
 
 
