@@ -5,7 +5,7 @@ from __future__ import annotations
 import psutil
 import pytest
 from labkit import exercises
-from textbook import execute, paths
+from textbook import execute, paths, workspace
 from textbook.lessons import load
 
 from ._lesson_files import META, code_cells, write_lesson
@@ -52,6 +52,19 @@ def test_a_lesson_editing_src_never_changes_snippets(tmp_path):
     execute.execute(lesson)
     assert (paths.SNIPPETS / 'my_robot_pkg' / 'setup.py').read_bytes() == before
     assert not (paths.SNIPPETS / 'my_ws_exercises').exists()
+
+
+def test_a_lesson_sees_no_bytecode_that_earlier_runs_left_in_the_books_install(tmp_path):
+    # `ros2 launch` writes __pycache__/ next to a launch file it loads (as Jazzy's does);
+    # a lesson's own `ls` must not depend on which tests used the book's build before.
+    launch = workspace.ensure_built() / 'my_robot_pkg/share/my_robot_pkg/launch'
+    (launch / '__pycache__').mkdir(exist_ok=True)
+    lesson = load(write_lesson(tmp_path, code_cells(
+        '%%bash\nls -a install/my_robot_pkg/share/my_robot_pkg/launch')))
+    notebook = execute.execute(lesson)
+    (cell,) = [c for c in notebook.cells if c.cell_type == 'code']
+    listed = ''.join(o.get('text', '') for o in cell.outputs).split()
+    assert 'robot_system.launch.py' in listed and '__pycache__' not in listed
 
 
 def test_the_build_flag_is_the_one_labkit_reads():

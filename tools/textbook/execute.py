@@ -111,7 +111,11 @@ def student_workspace(folder: Path, built: bool = True) -> Path:
         shutil.copytree(package, folder / 'src' / package.name,
                         ignore=shutil.ignore_patterns('__pycache__'))
     if built:
-        shutil.copytree(workspace.ensure_built().resolve(), folder / 'install', symlinks=True)
+        # Without the bytecode earlier runs left in the book's install/ (`ros2 launch`
+        # writes __pycache__/ next to a launch file): what a lesson lists is what its
+        # own runs made, whichever tests used the book's build before.
+        shutil.copytree(workspace.ensure_built().resolve(), folder / 'install', symlinks=True,
+                        ignore=shutil.ignore_patterns('__pycache__'))
     return folder
 
 
