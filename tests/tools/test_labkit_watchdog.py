@@ -103,6 +103,21 @@ def test_watchdog_usage_error():
         2, 'usage: watchdog.py OWNER_PID PGID\n')
 
 
+def test_sigterm_ends_the_watchdog_at_once_without_the_interpreters_shutdown():
+    # Its SIGTERM can arrive while it is exiting by itself; a SystemExit raised then
+    # would print `Exception ignored in: <module 'threading'...` into the lesson.
+    code = ('import atexit, os, signal, sys\n'
+            f'sys.path.insert(0, {os.path.dirname(WATCHDOG)!r})\n'
+            'import watchdog\n'
+            "atexit.register(print, 'interpreter shutdown ran')\n"
+            'watchdog.handle_signals()\n'
+            'os.kill(os.getpid(), signal.SIGTERM)\n'
+            'signal.pause()\n')
+    result = subprocess.run([sys.executable, '-c', code], capture_output=True, text=True,
+                            timeout=30)
+    assert (result.returncode, result.stdout, result.stderr) == (0, '', '')
+
+
 def _execute(client, code: str, timeout: float = 120) -> list[dict]:
     """Run a cell; return its output messages (stream, display, result, error)."""
     msg_id = client.execute(code)

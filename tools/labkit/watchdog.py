@@ -44,9 +44,17 @@ def main(argv: list[str]) -> int:
     if len(argv) != 2 or not all(arg.isdigit() for arg in argv):
         print('usage: watchdog.py OWNER_PID PGID', file=sys.stderr)
         return 2
-    signal.signal(signal.SIGTERM, lambda *_: sys.exit(0))  # labkit's stop() ends us
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    handle_signals()
     return watch(int(argv[0]), int(argv[1]))
+
+
+def handle_signals() -> None:
+    """labkit's stop() ends the watchdog with SIGTERM, at once: the watchdog may be
+    exiting by itself already (its group just emptied), and a SystemExit raised in
+    the interpreter's shutdown is printed as `Exception ignored ...` into the
+    notebook cell (seen on Jazzy in 6.13).  Ctrl-C in the kernel is not for it."""
+    signal.signal(signal.SIGTERM, lambda *_: os._exit(0))
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 if __name__ == '__main__':
