@@ -78,7 +78,8 @@ fi
 
 stamp_input="$(cat "$root/requirements/lock.txt" "$root/requirements/base.in" \
   "$root/pyproject.toml" "$root/tools/cleanroom/pyproject.toml" \
-  "$root/tools/rclhelpers/pyproject.toml" "$root/tools/speccheck/pyproject.toml" "$0"; echo "system_ros=$USE_SYSTEM_ROS")"
+  "$root/tools/rclhelpers/pyproject.toml" "$root/tools/speccheck/pyproject.toml" \
+  "$root/tools/speccheck/setup.py" "$0"; echo "system_ros=$USE_SYSTEM_ROS")"
 stamp="$(printf '%s' "$stamp_input" | sha256sum | cut -c1-16)"
 if [ -f "$venv/.setup-stamp" ] && [ "$(cat "$venv/.setup-stamp")" = "$stamp" ]; then
   build_ddsfix
@@ -104,7 +105,9 @@ pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 # it, and it is on no index.
 "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/rclhelpers"
 "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root"
-"${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/speccheck"  # after labkit (root)
+# after labkit (root); --no-deps: its dependencies are installed above (base.in and
+# the editable rclhelpers, which its setup.py would otherwise reinstall from a copy)
+"${pip[@]}" install -c "$root/requirements/lock.txt" --no-deps -e "$root/tools/speccheck"
 if [ "$USE_SYSTEM_ROS" = 0 ]; then
   "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/cleanroom"
   make_venv_a_ros_prefix

@@ -1,57 +1,73 @@
 """speccheck installs and runs next to a real ROS 2 Jazzy, without the book (issue 24).
 
-Runs when SPECCHECK_JAZZY names a Jazzy's setup.bash (the reference:
-`SPECCHECK_JAZZY=build/jazzy-reference/setup.bash`); the snippets workspace
-built for that Jazzy is `build/jazzy/ws/install` (what `python -m textbook parity`
-builds), or SPECCHECK_JAZZY_WS.  A fresh venv over the sourced Jazzy gets
-`pip install tools/rclhelpers tools/speccheck` and nothing else of this
-repository; its `speccheck` then checks a lesson's spec statically and running,
-in this test process's ROS domain.  Without SPECCHECK_JAZZY it is skipped (and
-says so): the clean-room environment has no second ROS 2 to install next to.
+The Jazzy is SPECCHECK_JAZZY (a setup.bash, e.g. /opt/ros/jazzy/setup.bash) or
+else the run-only reference in ../shared/jazzy-reference, installed into
+build/jazzy-reference as `python -m textbook parity` installs it (CI has it).
+A fresh venv over the sourced Jazzy gets `pip install ./tools/speccheck`
+(which brings tools/rclhelpers) and nothing else of this repository; the
+Jazzy's own colcon builds my_robot_pkg into a workspace of the test's; the
+installed `speccheck` then checks a lesson's spec statically and running, in
+this test process's ROS domain.
 """
 from __future__ import annotations
 
 import os
 import shlex
 import subprocess
+from collections.abc import Callable
 from pathlib import Path
 
 import pytest
+from textbook import parity
 
 ROOT = Path(__file__).parents[2]
-JAZZY = os.environ.get('SPECCHECK_JAZZY')
-WORKSPACE = Path(os.environ.get('SPECCHECK_JAZZY_WS', ROOT / 'build/jazzy/ws/install'))
 SPEC = 'my_robot_pkg/specs/patrol.spec.yaml'
 
-pytestmark = pytest.mark.skipif(not JAZZY, reason='SPECCHECK_JAZZY (a Jazzy setup.bash) not set')
+pytestmark = pytest.mark.skipif(
+    not os.environ.get('SPECCHECK_JAZZY') and not parity.REFERENCE_INSTALLER.exists(),
+    reason='no ROS 2 Jazzy: set SPECCHECK_JAZZY to its setup.bash, or put the reference '
+           f'at {parity.REFERENCE_INSTALLER.parent}')
 
 
-def in_jazzy(command: str, timeout: float) -> subprocess.CompletedProcess[str]:
-    """`command` in a bash with the Jazzy and the workspace sourced, in this
-    process's ROS domain, from snippets/."""
-    script = (f'source {shlex.quote(str(ROOT / JAZZY))} && '
-              f'source {shlex.quote(str(WORKSPACE / "setup.bash"))} && {command}')
+@pytest.fixture(scope='module')
+def in_jazzy(tmp_path_factory) -> Callable[..., subprocess.CompletedProcess[str]]:
+    """`in_jazzy(command, timeout)`: `command` in a bash with the Jazzy and a workspace
+    of my_robot_pkg (built by the Jazzy's colcon) sourced, in this process's ROS
+    domain, from snippets/."""
+    setup = parity.reference_setup(os.environ.get('SPECCHECK_JAZZY'))
     env = {name: value for name, value in os.environ.items()
            if not name.startswith(('PYTHON', 'AMENT', 'COLCON', 'VIRTUAL_ENV'))}
     env['PATH'] = os.pathsep.join(entry for entry in env.get('PATH', os.defpath).split(os.pathsep)
                                   if not entry.startswith(str(ROOT)))  # not the book's venv
     env['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
-    return subprocess.run(['bash', '-c', script], cwd=ROOT / 'snippets', env=env,
-                          capture_output=True, text=True, timeout=timeout)
+    workspace = tmp_path_factory.mktemp('jazzy_ws')
+    sourced = f'source {shlex.quote(str(setup))}'
+
+    def run(command: str, timeout: float, cwd: Path = ROOT / 'snippets',
+            workspace_sourced: bool = True) -> subprocess.CompletedProcess[str]:
+        script = sourced
+        if workspace_sourced:
+            script += f' && source {shlex.quote(str(workspace / "install/setup.bash"))}'
+        return subprocess.run(['bash', '-c', f'{script} && {command}'], cwd=cwd, env=env,
+                              capture_output=True, text=True, timeout=timeout)
+
+    built = run(f'colcon build --base-paths {shlex.quote(str(ROOT / "snippets/my_robot_pkg"))}',
+                timeout=600, cwd=workspace, workspace_sourced=False)
+    assert built.returncode == 0, built.stdout + built.stderr
+    return run
 
 
 @pytest.fixture(scope='module')
-def speccheck(tmp_path_factory) -> str:
+def speccheck(in_jazzy, tmp_path_factory) -> str:
     """The `speccheck` command of a venv made over the sourced Jazzy."""
     venv = tmp_path_factory.mktemp('jazzy') / 'venv'
     made = in_jazzy(f'python3 -m venv --system-site-packages {venv} && '
-                    f'{venv}/bin/pip install -q {ROOT}/tools/rclhelpers {ROOT}/tools/speccheck',
-                    timeout=600)
+                    f'{venv}/bin/pip install -q {ROOT}/tools/speccheck', timeout=600)
     assert made.returncode == 0, made.stdout + made.stderr
     return str(venv / 'bin' / 'speccheck')
 
 
-def test_the_installed_speccheck_imports_nothing_of_the_book(speccheck):
+def test_the_installed_speccheck_imports_nothing_of_the_book(in_jazzy, speccheck):
     python = Path(speccheck).with_name('python')
     code = ('import sys, speccheck.__main__, speccheck.launcher, speccheck.snapshot\n'
             "book = {'labkit', 'textbook', 'ros2_cleanroom'}\n"
@@ -61,7 +77,7 @@ def test_the_installed_speccheck_imports_nothing_of_the_book(speccheck):
     assert probe.stdout.strip() == '[]'
 
 
-def test_static_then_live_on_jazzy(speccheck):
+def test_static_then_live_on_jazzy(in_jazzy, speccheck):
     static = in_jazzy(f'{speccheck} static {SPEC} --launch my_robot_pkg patrol.launch.py',
                       timeout=180)
     assert static.returncode == 0, static.stdout + static.stderr
@@ -73,7 +89,7 @@ def test_static_then_live_on_jazzy(speccheck):
     assert 'FAILED' not in live.stdout
 
 
-def test_live_names_the_node_that_never_came_on_jazzy(speccheck, tmp_path):
+def test_live_names_the_node_that_never_came_on_jazzy(in_jazzy, speccheck, tmp_path):
     spec = tmp_path / 'absent.yaml'
     spec.write_text('nodes:\n  /scout/robot_controller: {}\n  /scout/lidar: {}\n')
     live = in_jazzy(f'{speccheck} live {spec} --launch my_robot_pkg patrol.launch.py '
