@@ -22,6 +22,10 @@ from textbook.lessons import load
 
 from ._shown_snippets import launch_files_included_by
 
+#: The first test to ask for the executed lesson may execute it (about 4 minutes on a
+#: loaded 2-core machine), as test_lessons.py allows a lesson; a hang guard only.
+pytestmark = pytest.mark.timeout(900)
+
 LESSON = paths.LESSONS / 'ch06/L2/10_optimising_node_configuration.md'
 DRAFT = paths.SNIPPETS / 'ai_drafts' / 'ch06_10_pipeline'
 #: SHA-256 of the files as given to and received from the assistant (2026-11-23).

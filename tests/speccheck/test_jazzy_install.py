@@ -30,10 +30,10 @@ pytestmark = pytest.mark.skipif(
 
 
 @pytest.fixture(scope='module')
-def in_jazzy(tmp_path_factory) -> Callable[..., subprocess.CompletedProcess[str]]:
+def in_jazzy(tmp_path_factory, session_lease) -> Callable[..., subprocess.CompletedProcess[str]]:
     """`in_jazzy(command, timeout)`: `command` in a bash with the Jazzy and a workspace
     of my_robot_pkg (built by the Jazzy's colcon) sourced, in this process's ROS
-    domain, from snippets/."""
+    domain (`session_lease`, in os.environ), from snippets/."""
     setup = parity.reference_setup(os.environ.get('SPECCHECK_JAZZY'))
     env = {name: value for name, value in os.environ.items()
            if not name.startswith(('PYTHON', 'AMENT', 'COLCON', 'VIRTUAL_ENV'))}
