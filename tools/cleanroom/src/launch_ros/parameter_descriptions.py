@@ -11,6 +11,7 @@ from pathlib import Path
 from typing import Any
 
 from launch import LaunchContext, Substitution
+from launch.substitutions import TextSubstitution
 from launch.utilities import normalize_to_list_of_substitutions
 
 from ._support.file_substitutions import expand_file_substitutions
@@ -29,11 +30,18 @@ class ParameterValue:
     """
 
     def __init__(self, value: Any, *, value_type: Any = None) -> None:
+        value = _checked_value(value)
         if value_type is not None and not _contains_substitution(value):
             coerce_value(plain_python_value(value), value_type)
         self.__value = value
         self.__value_type = value_type
         self.__evaluated: Any = None
+
+    def __str__(self) -> str:
+        # Jazzy shows one substitution as a list of one (and evaluates it as one text)
+        shown = [self.__value] if isinstance(self.__value, Substitution) else self.__value
+        return (f'launch_ros.description.ParameterValue(value={shown}, '
+                f'value_type={self.__value_type})')
 
     @property
     def value(self) -> Any:
@@ -53,13 +61,52 @@ class ParameterValue:
         return self.__evaluated
 
 
+_SCALARS = (str, int, float, bool)
+
+
+def _checked_value(value: Any) -> Any:
+    """A parameter value as Jazzy takes it: a scalar, a substitution, or a list (any
+    other sized iterable becomes one: a tuple, a set, a dict's keys, bytes) of
+    scalars, substitutions and lists of substitutions.  A list of scalars only must
+    be of one type (ints with floats become floats); other values are refused with
+    Jazzy's words."""
+    if isinstance(value, (Substitution, *_SCALARS)):
+        return value
+    if value is None or isinstance(value, ParameterValue) or not hasattr(value, '__iter__'):
+        raise TypeError('value should be either a scalar, a substitutions, or a mixed list of '
+                        f'scalars and substitutions. Got `value={value}` of type '
+                        f'`{type(value)}`. ')
+    if not isinstance(value, list):
+        len(value)  # as in Jazzy: "object of type 'generator' has no len()"
+        value = list(value)
+    if not all(isinstance(item, (*_SCALARS, Substitution)) or (
+            isinstance(item, list) and all(isinstance(i, Substitution) for i in item))
+            for item in value):
+        raise TypeError('value is a list, and one of the items is not a scalar, a '
+                        f"Substitution or a list of substitutions. Got value='{value}'")
+    if any(isinstance(item, (Substitution, list)) for item in value):
+        return [TextSubstitution(text=item) if isinstance(item, str) else item
+                for item in value]
+    kinds = {type(item) for item in value}
+    if kinds == {int, float}:
+        return [float(item) for item in value]
+    if len(kinds) > 1:
+        raise TypeError(f"Input value is not an acceptable 'SomeValueType'.Got value='{value}'")
+    return value
+
+
 class Parameter:
     """One named parameter; given to a node it becomes `-p name:=value`."""
 
     def __init__(self, name: Any, value: Any, *, value_type: Any = None) -> None:
         self.__name = name
-        self.__value = value if isinstance(value, ParameterValue) else ParameterValue(
-            value, value_type=value_type)
+        # A ParameterValue is no value of a Parameter: Jazzy refuses it (TypeError).
+        self.__value = ParameterValue(value, value_type=value_type)
+
+    def __str__(self) -> str:
+        return (f'launch_ros.description.Parameter('
+                f'name={normalize_to_list_of_substitutions(self.__name)}, '
+                f'value={self.value}, value_type={self.value_type})')
 
     @property
     def name(self) -> Any:

@@ -98,3 +98,47 @@ def test_normalized_and_evaluated_parameters_have_jazzys_shapes():
     for described in (typed, parameter, ParameterFile('/tmp/x.yaml')):
         assert repr(described).startswith(f'<launch_ros.parameter_descriptions.'
                                            f'{type(described).__name__} object at 0x')
+
+
+WRONG_KIND = (r'^value should be either a scalar, a substitutions, or a mixed list of scalars '
+              r'and substitutions\. Got `value=.*` of type `<class .*>`\. $')
+WRONG_ITEM = (r'^value is a list, and one of the items is not a scalar, a Substitution or a '
+              r"list of substitutions\. Got value='.*'$")
+
+
+@pytest.mark.parametrize('value, error', [
+    (None, WRONG_KIND), (object(), WRONG_KIND), (ParameterValue(1), WRONG_KIND),
+    ([[1]], WRONG_ITEM), ([['a']], WRONG_ITEM), (['a', ['b']], WRONG_ITEM),
+    ([ParameterValue(1)], WRONG_ITEM),
+    ([1, 'x'], r"^Input value is not an acceptable 'SomeValueType'\.Got value='\[1, 'x'\]'$"),
+    ([1, True], r"^Input value is not an acceptable 'SomeValueType'\.Got value='\[1, True\]'$"),
+    ((x for x in [1]), r"^object of type 'generator' has no len\(\)$"),
+])
+def test_values_jazzy_refuses_when_described(value, error):
+    """Observed on Jazzy: ParameterValue and Parameter refuse these at once (TypeError),
+    a Parameter given a ParameterValue included."""
+    with pytest.raises(TypeError, match=error):
+        ParameterValue(value)
+    if not isinstance(value, type(x for x in [])):
+        with pytest.raises(TypeError, match=error):
+            Parameter('a', value)
+
+
+@pytest.mark.parametrize('value, evaluated, shown', [
+    ((1, 2), [1, 2], '[1, 2]'), ({1}, [1], '[1]'), ({'a': 1}, ['a'], "['a']"),
+    (b'x', [120], '[120]'), ([1.0, 2], [1.0, 2.0], '[1.0, 2.0]'), ([], [], '[]'),
+    ([True, False], [True, False], '[True, False]'), ('x', 'x', 'x'),
+])
+def test_values_jazzy_takes_and_how_it_shows_them(value, evaluated, shown):
+    described = ParameterValue(value)
+    assert described.evaluate(LaunchContext()) == evaluated
+    assert str(described) == f'launch_ros.description.ParameterValue(value={shown}, ' \
+        'value_type=None)'
+
+
+def test_a_list_of_substitutions_of_different_types_is_not_uniform():
+    with pytest.raises(ValueError, match=r'^The output list is not uniform$'):
+        ParameterValue([1, TextSubstitution(text='x')]).evaluate(LaunchContext())
+    assert str(Parameter('a', 1)).startswith(
+        'launch_ros.description.Parameter(name=[<launch.substitutions.text_substitution.'
+        'TextSubstitution object at 0x')

@@ -64,8 +64,11 @@ def evaluate_value(context: LaunchContext, value: Any, value_type: Any = None) -
 
 
 def _uniform(items: Sequence[Any]) -> list[Any]:
-    """Arrays are homogeneous in ROS: ints mixed with floats become floats."""
+    """Arrays are homogeneous in ROS: ints mixed with floats become floats; any other
+    mix (items of substitutions evaluated to different types) is Jazzy's ValueError."""
     kinds = {type(item) for item in items}
     if kinds == {int, float}:
         return [float(item) for item in items]
+    if len(kinds) > 1:
+        raise ValueError('The output list is not uniform')
     return list(items)
