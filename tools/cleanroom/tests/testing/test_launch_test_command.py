@@ -108,3 +108,12 @@ def test_a_run_gets_its_own_domain_when_none_is_set(run_env):
     finally:
         if saved is not None:
             os.environ['ROS_DOMAIN_ID'] = saved
+
+
+def test_a_process_name_nothing_matches_names_the_processes_there_are(run):
+    # Observed on the reference (launch_testing 3.4.3): sorted 'name-N args' of each.
+    result = run(LAUNCH_TEST, 'lt_proc_lookup.py')
+    assert result.returncode == 1
+    assert ("launch_testing.util.proc_lookup.NoMatchingProcessException: Did not find any "
+            "processes matching name 'dock' and args 'None'. Procs: listener-2 31, talker-1 30"
+            in result.stderr.splitlines()), result.stderr

@@ -54,10 +54,13 @@ def resolveProcesses(info_obj, *, process=None, cmd_args: str | None = None,
         raise NoMatchingProcessException(
             f'No data recorded for proc {_proc_to_name_and_args(process)}')
     name = str(process)
+    recorded = list(recorded)
     found = [p for p in recorded if name in proc_name(p) and _matches_args(p, cmd_args)]
-    if not found:
+    if not found:  # Jazzy's words, with the processes there are, sorted
+        procs = ', '.join(sorted(_proc_to_name_and_args(p) for p in recorded))
         raise NoMatchingProcessException(
-            f"Did not find any processes with name '{name}' and args '{cmd_args}'")
+            f"Did not find any processes matching name '{name}' and args '{cmd_args}'. "
+            f'Procs: {procs}')
     if strict_proc_matching and len(found) > 1:
         names = ', '.join(_proc_to_name_and_args(p) for p in found)
         raise NoMatchingProcessException(
