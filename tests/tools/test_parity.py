@@ -106,6 +106,8 @@ def test_where_an_install_keeps_python_is_not_a_difference():
     assert normalise(venv) == normalise(ubuntu) == [
         'python3 /work/main/build/ws/install/pkg/lib/pkg/node --ros-args',
         '  File "site-packages/rclpy/node.py", line 388, in declare_parameter']
+    shown = '~/ros2-launch-textbook/.venv/bin/python ~/ros2-launch-textbook/build/ws/x'
+    assert normalise(shown) == ['python3 ~/ros2-launch-textbook/build/ws/x']
     assert normalise('[WARN] [_ros2cli_20479]: GID: 01.0f.78.fd.d5') == [
         '[WARN] [_ros2cli_PID]: GID: …']
 
@@ -113,6 +115,9 @@ def test_where_an_install_keeps_python_is_not_a_difference():
 def test_the_second_stacks_build_folder_stands_for_the_first():
     jazzy = paths.ROOT / 'build' / 'jazzy'
     assert normalise(f'{jazzy}/ws/install/x', [jazzy]) == [f"{paths.ROOT / 'build'}/ws/install/x"]
+    # as the pages show it (paths.shown)
+    assert normalise(paths.shown(f'{jazzy}/ws/install/x'), [jazzy]) == [
+        '~/ros2-launch-textbook/build/ws/install/x']
 
 
 def test_identical_cells_hold_and_a_different_one_is_reported_with_its_diff():

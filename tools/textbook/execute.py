@@ -170,16 +170,12 @@ def execute(lesson: Lesson, timeout: int | None = None) -> nbformat.NotebookNode
     return shown_in_home(notebook, workdir)
 
 
-#: How the pages show the folder a lesson ran in: the student's workspace.
-STUDENT_WORKSPACE = '~/ros2_ws'
-
-
 def shown_in_home(notebook: nbformat.NotebookNode, workdir: Path) -> nbformat.NotebookNode:
-    """``notebook`` with the lesson's scratch folder written as ``~/ros2_ws`` in its
-    outputs: the path a student's terminal shows for their workspace, not the
-    build machine's temporary folder."""
+    """``notebook`` with the build machine's folders in its outputs written as
+    :func:`paths.shown` writes them: the paths a student's terminal shows, not the
+    build machine's temporary folder or checkout."""
     def shown(text: str) -> str:
-        return text.replace(str(workdir), STUDENT_WORKSPACE)
+        return paths.shown(text, workdir)
 
     for cell in notebook.cells:
         for output in cell.get('outputs', []):

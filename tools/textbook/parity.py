@@ -73,8 +73,8 @@ _VARYING = [
 #: where the Python that runs Python nodes lives (`/usr/bin/python3` on Ubuntu, a venv
 #: or pyenv here), and so where its packages are (a traceback's file names).
 _INSTALL = [
-    (re.compile(r'(?<![\w/.])/[\w./-]*/bin/python3?(?:\.\d+)?(?=\s|$)', re.M), 'python3'),
-    (re.compile(r'(?<![\w/.])/[\w./-]*/lib/python3\.\d+/site-packages/'), 'site-packages/'),
+    (re.compile(r'(?<![\w/.~])~?/[\w./-]*/bin/python3?(?:\.\d+)?(?=\s|$)', re.M), 'python3'),
+    (re.compile(r'(?<![\w/.~])~?/[\w./-]*/lib/python3\.\d+/site-packages/'), 'site-packages/'),
     # the log file of a Python node is named after the interpreter (python, python3.12)
     (re.compile(r'\bpython3?(?:\.\d+)?(?=_PID_TIME\.log)'), 'python3'),
 ]
@@ -101,6 +101,8 @@ def normalise(text: str, builds: Iterable[Path] = ()) -> list[str]:
     """
     for build in builds:
         text = text.replace(str(build), str(paths.ROOT / 'build'))
+        text = text.replace(paths.shown(str(build)),
+                            paths.shown(str(paths.ROOT / 'build')))
     for pattern, replacement in (*_VARYING, *_INSTALL):
         text = pattern.sub(replacement, text)
     out: list[str] = []

@@ -53,3 +53,19 @@ def rel(path: Path) -> str:
         return str(Path(path).resolve().relative_to(ROOT))
     except ValueError:
         return str(path)
+
+
+#: How the pages show the folder a lesson ran in: the student's workspace.
+STUDENT_WORKSPACE = '~/ros2_ws'
+#: How the pages show this checkout (its .venv, its build/): where the README's
+#: `git clone` puts it in a student's home.
+STUDENT_CHECKOUT = '~/ros2-launch-textbook'
+
+
+def shown(text: str, workdir: Path | None = None) -> str:
+    """``text`` with the build machine's folders written as a student's terminal
+    shows them: ``workdir`` (a lesson's scratch folder) as ``~/ros2_ws``, this
+    checkout as ``~/ros2-launch-textbook``."""
+    if workdir is not None:
+        text = text.replace(str(workdir), STUDENT_WORKSPACE)
+    return text.replace(str(ROOT), STUDENT_CHECKOUT)
