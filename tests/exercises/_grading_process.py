@@ -9,20 +9,35 @@ the check blocks in C, where no Python timeout reaches it: CI once hung there
 (a day-shift probe of 7.4, in rmw_create_client).  So each case is graded in
 a child process: a child that has not answered within HANG_GUARD seconds is
 killed (labkit's watchdog then stops its launches) and the case is graded once
-more, which the test log says.
+more.  A hang is never silent: before the kill, the stacks of every thread of
+the child (gdb, where installed: Fast DDS's own threads too) and its Python
+stacks (faulthandler) go to build/hangs/, and the test run ends with a warning
+naming the file, so each hang leaves the evidence its cause needs.
 """
 from __future__ import annotations
 
 import json
+import shutil
+import signal
 import subprocess
 import sys
+import time
+import warnings
 from pathlib import Path
 
+import psutil
 from labkit.grading.verdict import Verdict
+from textbook import paths
 
 #: Seconds; the slowest case takes about 230 s on a loaded 2-core CI worker.
 HANG_GUARD = 420.0
 ATTEMPTS = 2
+#: Where the stacks of a hung child are kept.
+HANGS = paths.BUILD / 'hangs'
+
+
+class GradingHang(UserWarning):
+    """A grading child hung and was killed; the warning names its stacks' file."""
 
 _CHILD = """
 import json, sys
@@ -40,17 +55,51 @@ def grade(exercise: str, workspace: Path, package: str, guard: float = HANG_GUAR
     """The verdict of `exercise` on `package`, graded in a child process (environment
     and ROS domain of this one); raises AssertionError when every attempt hung."""
     for attempt in range(1, ATTEMPTS + 1):
+        running = subprocess.Popen(
+            [sys.executable, '-X', 'faulthandler', '-c', child, exercise, str(workspace), package],
+            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
         try:
-            done = subprocess.run([sys.executable, '-c', child, exercise, str(workspace), package],
-                                  capture_output=True, text=True, timeout=guard, check=False)
-        except subprocess.TimeoutExpired as hung:
+            stdout, stderr = running.communicate(timeout=guard)
+        except subprocess.TimeoutExpired:
+            report = _hang_report(running)
             print(f'grading attempt {attempt} of {exercise} hung for {guard:g} s and was '
-                  f'killed; its output ended with:\n{_tail(hung.stdout)}{_tail(hung.stderr)}')
+                  f'killed; its stacks are in {report}')
+            warnings.warn(GradingHang(f'grading {exercise} ({package}) hung for {guard:g} s '
+                                      f'(attempt {attempt}); stacks: {report}'), stacklevel=2)
             continue
-        assert done.returncode == 0, f'grading {exercise} failed:\n{done.stdout}{done.stderr}'
-        answer = json.loads(done.stdout.strip().splitlines()[-1])
+        assert running.returncode == 0, f'grading {exercise} failed:\n{stdout}{stderr}'
+        answer = json.loads(stdout.strip().splitlines()[-1])
         return Verdict(answer['title'], [(met, sentence) for met, sentence in answer['results']])
     raise AssertionError(f'grading {exercise} hung {ATTEMPTS} times ({guard:g} s each)')
+
+
+def _hang_report(running: subprocess.Popen) -> Path:
+    """Kill the hung ``running`` child; first write its stacks (every thread, native
+    and Python), its processes and the end of its output to a file, returned."""
+    try:
+        family = [psutil.Process(running.pid), *psutil.Process(running.pid).children(True)]
+        processes = [f'{p.pid} {p.status()} {" ".join(p.cmdline())[:200]}' for p in family]
+    except psutil.Error:
+        processes = []
+    native = 'gdb is not installed'
+    if shutil.which('gdb'):
+        native = subprocess.run(['gdb', '-p', str(running.pid), '-batch', '-ex',
+                                 'thread apply all bt 40'], capture_output=True, text=True,
+                                timeout=120, check=False).stdout
+    running.send_signal(signal.SIGABRT)  # faulthandler prints every thread's Python stack
+    try:
+        stdout, stderr = running.communicate(timeout=30)
+    except subprocess.TimeoutExpired:
+        running.kill()
+        stdout, stderr = running.communicate()
+    HANGS.mkdir(parents=True, exist_ok=True)
+    report = HANGS / f'grading-{running.pid}-{time.strftime("%Y%m%d-%H%M%S")}.txt'
+    report.write_text('\n\n'.join([
+        '== processes (the child first)\n' + '\n'.join(processes),
+        '== output (end)\n' + _tail(stdout, 40),
+        '== standard error, with the Python stacks (end)\n' + _tail(stderr, 200),
+        '== native stacks of every thread (gdb)\n' + native]))
+    return report
 
 
 def _tail(output: str | bytes | None, lines: int = 15) -> str:

@@ -39,15 +39,26 @@ def test_the_verdict_comes_back_from_the_child(tmp_path):
 
 
 def test_a_child_that_hangs_is_killed_and_the_case_graded_again(tmp_path, capsys):
-    verdict = grade(tmp_path, {1})
+    with pytest.warns(grading_process.GradingHang, match='grading ex999 .* hung') as hangs:
+        verdict = grade(tmp_path, {1})
     assert verdict.results == [(True, 'met'), (False, 'not met')]
     assert (tmp_path / 'tries').read_text() == 'xx'
     log = capsys.readouterr().out
     assert f'grading attempt 1 of ex999 hung for {GUARD:g} s and was killed' in log
-    assert 'observing the graph' in log
+    # the hang's evidence: what it printed, where its Python code waited, its threads
+    report = Path(str(hangs[0].message).rsplit('stacks: ', 1)[1])
+    evidence = report.read_text()
+    report.unlink()
+    assert 'observing the graph' in evidence
+    assert 'time.sleep(600)' in evidence or 'File "<string>", line 9' in evidence, evidence
+    assert 'Thread 1' in evidence or 'gdb is not installed' in evidence, evidence
 
 
 def test_a_case_that_hangs_every_time_fails_naming_it(tmp_path):
-    with pytest.raises(AssertionError, match=r'grading ex999 hung 2 times \(5 s each\)'):
+    with pytest.warns(grading_process.GradingHang) as hangs, \
+            pytest.raises(AssertionError, match=r'grading ex999 hung 2 times \(5 s each\)'):
         grade(tmp_path, {1, 2})
     assert (tmp_path / 'tries').read_text() == 'xx'
+    assert len(hangs) == 2
+    for hang in hangs:
+        Path(str(hang.message).rsplit('stacks: ', 1)[1]).unlink()
