@@ -17,7 +17,7 @@ from launch.utilities import normalize_to_list_of_substitutions
 from ._support.file_substitutions import expand_file_substitutions
 from ._support.launch_cleanup import ensure_cleanup_registered
 from ._support.param_files import remove_temporary_file, write_temporary_file
-from ._support.parameter_values import coerce_value, plain_python_value
+from ._support.parameter_values import coerce_value, homogeneous, plain_python_value
 from ._support.substitution_values import evaluate_value, is_substitution_text, perform_text
 
 
@@ -87,12 +87,10 @@ def _checked_value(value: Any) -> Any:
     if any(isinstance(item, (Substitution, list)) for item in value):
         return [TextSubstitution(text=item) if isinstance(item, str) else item
                 for item in value]
-    kinds = {type(item) for item in value}
-    if kinds == {int, float}:
-        return [float(item) for item in value]
-    if len(kinds) > 1:
+    uniform = homogeneous(value)
+    if uniform is None:
         raise TypeError(f"Input value is not an acceptable 'SomeValueType'.Got value='{value}'")
-    return value
+    return uniform
 
 
 class Parameter:

@@ -22,22 +22,22 @@ ScalarValue = bool | int | float | str | bytes
 ParameterScalarTypes = (bool, int, float, str, bytes)
 
 
-def _uniform_list(items: list) -> list | None:
-    """A YAML list becomes a parameter array only if rcl could store it.
-
-    Arrays are homogeneous in ROS; mixing ints and floats promotes to
-    float.  Anything else (nested lists, dicts, mixed types) is refused.
-    """
-    if not items:
-        return None
+def homogeneous(items: Sequence[Any]) -> list | None:
+    """``items`` as a ROS array, which holds one type: ints mixed with floats become
+    floats; None when they mix any other types (each caller refuses that in the
+    words Jazzy uses there)."""
     kinds = {type(item) for item in items}
-    if not kinds <= {bool, int, float, str}:
-        return None
-    if len(kinds) == 1:
-        return items
     if kinds == {int, float}:
         return [float(item) for item in items]
-    return None
+    return list(items) if len(kinds) <= 1 else None
+
+
+def _uniform_list(items: list) -> list | None:
+    """A YAML list becomes a parameter array only if rcl could store it: scalars of
+    one type (see homogeneous); nested lists, dicts and mixed types are refused."""
+    if not items or not {type(item) for item in items} <= {bool, int, float, str}:
+        return None
+    return homogeneous(items)
 
 
 def yaml_typed(text: str) -> Any:

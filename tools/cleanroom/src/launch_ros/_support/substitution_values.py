@@ -21,6 +21,7 @@ from launch.utilities import normalize_to_list_of_substitutions, perform_substit
 from .parameter_values import (
     coerce_text,
     coerce_value,
+    homogeneous,
     is_list_type,
     list_item_type,
     plain_python_value,
@@ -64,11 +65,9 @@ def evaluate_value(context: LaunchContext, value: Any, value_type: Any = None) -
 
 
 def _uniform(items: Sequence[Any]) -> list[Any]:
-    """Arrays are homogeneous in ROS: ints mixed with floats become floats; any other
-    mix (items of substitutions evaluated to different types) is Jazzy's ValueError."""
-    kinds = {type(item) for item in items}
-    if kinds == {int, float}:
-        return [float(item) for item in items]
-    if len(kinds) > 1:
+    """Arrays are homogeneous in ROS (see homogeneous); items of substitutions that
+    evaluated to different types are Jazzy's ValueError."""
+    uniform = homogeneous(items)
+    if uniform is None:
         raise ValueError('The output list is not uniform')
-    return list(items)
+    return uniform
