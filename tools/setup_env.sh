@@ -87,29 +87,40 @@ if [ -f "$venv/.setup-stamp" ] && [ "$(cat "$venv/.setup-stamp")" = "$stamp" ]; 
 fi
 
 echo "setup: creating the project environment in $venv (system ROS: $USE_SYSTEM_ROS)" >&2
+# Every venv below is made with --clear: no package of an older set lingers
+# (a pytest the set no longer has would shadow the system's).
 reqs="$(mktemp)"
-trap 'rm -f "$reqs"' EXIT
+constraints="$(mktemp)"
+trap 'rm -f "$reqs" "$constraints"' EXIT
+cp "$root/requirements/lock.txt" "$constraints"
 if [ "$USE_SYSTEM_ROS" = 1 ]; then
-  "$python" -m venv --system-site-packages "$venv"
-  # ROS 2, CMake and colcon come from the system, as a ROS user has them: the
-  # system colcon runs `colcon test` with the system's pytest (Jazzy's
-  # launch_testing plugin is refused by the newer pytest of this venv).
-  grep -v -E '^(ros-|cmake$|colcon-)' "$root/requirements/base.in" > "$reqs"
+  "$python" -m venv --clear --system-site-packages "$venv"
+  # ROS 2, CMake, colcon and (where the system has it) pytest come from the
+  # system, as a ROS user has them: a lesson's `python -m pytest` and `colcon
+  # test` load Jazzy's launch_testing plugin, which a newer pytest than the
+  # system's (Ubuntu 24.04: 7.4.4) refuses ("Argument(s) {'path'} are declared
+  # in the hookimpl but can not be found in the hookspec").
+  drop='ros-|cmake$|colcon-'
+  if "$venv/bin/python" -c 'import pytest' 2>/dev/null; then
+    drop="$drop|pytest$"
+    grep -v -E '^(pytest|pluggy|iniconfig)==' "$root/requirements/lock.txt" > "$constraints"
+  fi
+  grep -v -E "^($drop)" "$root/requirements/base.in" > "$reqs"
 else
-  "$python" -m venv "$venv"
+  "$python" -m venv --clear "$venv"
   cp "$root/requirements/base.in" "$reqs"
 fi
 pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
-"${pip[@]}" install -c "$root/requirements/lock.txt" -r "$reqs"
+"${pip[@]}" install -c "$constraints" -r "$reqs"
 # rclhelpers (tools/rclhelpers) first: the root and the clean room depend on
 # it, and it is on no index.
-"${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/rclhelpers"
-"${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root"
+"${pip[@]}" install -c "$constraints" -e "$root/tools/rclhelpers"
+"${pip[@]}" install -c "$constraints" -e "$root"
 # after labkit (root); --no-deps: its dependencies are installed above (base.in and
 # the editable rclhelpers, which its setup.py would otherwise reinstall from a copy)
-"${pip[@]}" install -c "$root/requirements/lock.txt" --no-deps -e "$root/tools/speccheck"
+"${pip[@]}" install -c "$constraints" --no-deps -e "$root/tools/speccheck"
 if [ "$USE_SYSTEM_ROS" = 0 ]; then
-  "${pip[@]}" install -c "$root/requirements/lock.txt" -e "$root/tools/cleanroom"
+  "${pip[@]}" install -c "$constraints" -e "$root/tools/cleanroom"
   make_venv_a_ros_prefix
 fi
 build_ddsfix

@@ -96,6 +96,14 @@ def test_launch_log_times_and_node_log_files_vary():
         'params_file:=/tmp/ex64_…/other_robot.yaml /tmp/tmp…']
 
 
+def test_how_long_tests_took_is_not_a_difference():
+    assert normalise('Ran 3 tests in 1.198s\nRan 1 test in 15.4s\nRan out in 2.5s') == [
+        'Ran 3 tests in …s', 'Ran 1 test in …s', 'Ran out in 2.5s']
+    assert normalise('1 passed, 2 deselected, 2 warnings in 2.51s\n'
+                     '===== 3 failed, 2 passed in 72.30s (0:01:12) =====') == [
+        '1 passed, 2 deselected, 2 warnings in …s', '===== 3 failed, 2 passed in …s =====']
+
+
 def test_where_an_install_keeps_python_is_not_a_difference():
     venv = ('/work/main/.venv/bin/python /work/main/build/ws/install/pkg/lib/pkg/node '
             '--ros-args\n  File "/work/main/.venv/lib/python3.11/site-packages/rclpy/node.py", '

@@ -64,6 +64,11 @@ _VARYING = [
     (re.compile(r'^\d{9,}\.\d+ ', re.M), ''),
     # a node's log file: ~/.ros/log/<executable>_<pid>_<milliseconds>.log
     (re.compile(r'_\d+_\d{13}\.log\b'), '_PID_TIME.log'),
+    # how long tests took: unittest's `Ran 3 tests in 1.198s`, pytest's last line
+    # `1 passed, 2 deselected in 2.51s` (with or without its `=` rule)
+    (re.compile(r'^(Ran \d+ tests? in )\d+\.\d+s$', re.M), r'\1…s'),
+    (re.compile(r'^(=* ?\d+ (?:passed|failed|error|errors|skipped|deselected)\b.* in )'
+                r'\d+\.\d+s(?: \(\d+:\d\d:\d\d\))?( ?=*)$', re.M), r'\1…s\2'),
     # ros2cli's hidden node carries the pid of the command: `_ros2cli_20479`
     (re.compile(r'\b_ros2cli_\d+'), '_ros2cli_PID'),
     # an endpoint's GID is made up when the endpoint is created
