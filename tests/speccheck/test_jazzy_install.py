@@ -35,10 +35,7 @@ def in_jazzy(tmp_path_factory, session_lease) -> Callable[..., subprocess.Comple
     of my_robot_pkg (built by the Jazzy's colcon) sourced, in this process's ROS
     domain (`session_lease`, in os.environ), from snippets/."""
     setup = parity.reference_setup(os.environ.get('SPECCHECK_JAZZY'))
-    env = {name: value for name, value in os.environ.items()
-           if not name.startswith(('PYTHON', 'AMENT', 'COLCON', 'VIRTUAL_ENV'))}
-    env['PATH'] = os.pathsep.join(entry for entry in env.get('PATH', os.defpath).split(os.pathsep)
-                                  if not entry.startswith(str(ROOT)))  # not the book's venv
+    env = parity.without_the_book(os.environ)
     env['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'LOCALHOST'
     workspace = tmp_path_factory.mktemp('jazzy_ws')
     sourced = f'source {shlex.quote(str(setup))}'

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 import nbformat
-from textbook import paths
+from textbook import parity, paths
 from textbook.parity import LessonParity, compare, normalise, table
 
 
@@ -162,3 +162,11 @@ def test_the_table_says_which_stack_a_lesson_did_not_run_on():
     rows = table([failed, held]).splitlines()
     assert rows[1].endswith('✗ did not run on Jazzy')
     assert rows[2].endswith('✓ held')
+
+
+def test_the_jazzy_side_starts_from_a_shell_without_the_book():
+    book = {'PATH': f'{paths.ROOT}/.venv/bin:/usr/local/bin:/usr/bin', 'VIRTUAL_ENV': 'x',
+            'PYTHONPATH': f'{paths.ROOT}/tools', 'AMENT_PREFIX_PATH': 'y',
+            'COLCON_PREFIX_PATH': 'z', 'HOME': '/root', 'TEXTBOOK_FRESH': '1'}
+    assert parity.without_the_book(book) == {
+        'PATH': '/usr/local/bin:/usr/bin', 'HOME': '/root', 'TEXTBOOK_FRESH': '1'}

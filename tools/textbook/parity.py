@@ -23,7 +23,7 @@ import os
 import re
 import subprocess
 import sys
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
@@ -233,12 +233,22 @@ def reference_setup(explicit: str | None) -> Path:
     return Path(done.stdout.strip().splitlines()[-1])
 
 
+def without_the_book(environ: Mapping[str, str]) -> dict[str, str]:
+    """``environ`` as a shell that never met this checkout has it: no virtual
+    environment, no Python, ament or colcon settings, nothing of the checkout on
+    PATH (its .venv/bin), so that what is sourced next is all there is."""
+    env = {name: value for name, value in environ.items()
+           if not name.startswith(('PYTHON', 'AMENT', 'COLCON', 'VIRTUAL_ENV'))}
+    env['PATH'] = os.pathsep.join(entry for entry in env.get('PATH', os.defpath).split(os.pathsep)
+                                  if not Path(entry).is_relative_to(paths.ROOT))
+    return env
+
+
 def jazzy_environment(setup: Path) -> dict[str, str]:
-    """os.environ as after `source SETUP`, with the build products in build/jazzy,
-    and build/jazzy/venv made (or refreshed) by tools/setup_env.sh."""
-    clean = {k: v for k, v in os.environ.items() if k != 'VIRTUAL_ENV'}
-    clean['PATH'] = os.pathsep.join(p for p in clean.get('PATH', '').split(os.pathsep)
-                                    if Path(p) != paths.VENV_BIN)
+    """os.environ as after `source SETUP` in a shell :func:`without_the_book`, with
+    the build products in build/jazzy, and build/jazzy/venv made (or refreshed) by
+    tools/setup_env.sh."""
+    clean = without_the_book(os.environ)
     script = f'source {str(setup)!r} >/dev/null && env -0'
     dumped = subprocess.run(['bash', '-c', script], env=clean, capture_output=True,
                             check=True).stdout.decode()
