@@ -22,5 +22,7 @@ setup(
     maintainer_email='textbook@example.com',
     description='Launch and parameter files of the capstone robot system (chapter 7).',
     license='Apache-2.0',
-    tests_require=['pytest'],
+    # colcon test runs pytest for a package whose 'test' extra names it (a
+    # tests_require is ignored by newer setuptools, and colcon then runs unittest)
+    extras_require={'test': ['pytest']},
 )

@@ -23,7 +23,9 @@ setup(
     description='A battery simulator, a low-battery monitor and a dock planner, built from '
                 'a written specification in the lesson on spec-driven systems.',
     license='Apache-2.0',
-    tests_require=['pytest'],
+    # colcon test runs pytest for a package whose 'test' extra names it (a
+    # tests_require is ignored by newer setuptools, and colcon then runs unittest)
+    extras_require={'test': ['pytest']},
     entry_points={
         'console_scripts': [
             'battery_sim = dock_watch_pkg.battery_sim:main',
