@@ -1,6 +1,8 @@
 """Bad front-end files fail the launch with Jazzy's messages (frontends goldens 38_/39_)."""
 from __future__ import annotations
 
+import io
+
 import pytest
 from launch import InvalidLaunchFileError
 from launch.frontend import InvalidFrontendLaunchFileError, Parser
@@ -88,8 +90,7 @@ def test_a_python_file_is_no_front_end_file(write):
         HEAD.format('py'),
         f" - InvalidPythonLaunchFileError: launch file at '{path}' does not contain the "
         "required function 'generate_launch_description()'",
-        ' - InvalidFrontendLaunchFileError: The launch file may have a syntax error, or its '
-        'format is unknown'])
+        " - RuntimeError: Expected 'launch' as root tag"])  # read as YAML: a string, no launch
 
 
 def test_frontend_loader_alone(write):
@@ -103,7 +104,45 @@ def test_frontend_loader_alone(write):
 
 def test_root_must_be_launch(write):
     path = write('bad.launch.xml', '<group/>')
-    assert "Expected 'launch' as root tag, got 'group' instead" in load_error(path)
+    assert load_error(path).splitlines()[:2] == [
+        HEAD.format('xml'), " - RuntimeError: Expected 'launch' as root tag"]
+
+
+def test_a_file_named_for_no_format_is_read_by_any_front_end(write):
+    """Jazzy tries every front end on a file whose name says no format (a path, or a
+    file object, with or without a name), from where the file object started; when
+    all fail, the format is unknown; a missing file is the FileNotFoundError."""
+    assert get_launch_description_from_any_launch_file(
+        str(write('robot', '<launch><log message="m"/></launch>'))).entities
+    assert get_launch_description_from_any_launch_file(
+        str(write('robot.txt', 'launch:\n- log: {message: m}\n'))).entities
+    named = io.StringIO('<launch/>')
+    named.name = 'robot.launch.yaml'  # not YAML after all: XML reads it
+    assert Parser.load(named)[0].type_name == 'launch'
+    assert Parser.load(io.StringIO('launch: []\n'))[0].type_name == 'launch'
+    with pytest.raises(InvalidFrontendLaunchFileError) as unknown:
+        Parser.load(io.StringIO('garbage: [\n'))
+    assert unknown.value.args == ('',) and unknown.value.__cause__ is None
+    assert str(unknown.value) == 'The launch file may have a syntax error, or its format is unknown'
+    with pytest.raises(InvalidLaunchFileError) as unknown:
+        get_launch_description_from_any_launch_file(str(write('robot.txt', 'garbage(')))
+    assert str(unknown.value) == 'The launch file may have a syntax error, or its format is unknown'
+    with pytest.raises(FileNotFoundError):
+        Parser.load(str(write('x', '')) + '.missing.xml')
+    assert type(InvalidFrontendLaunchFileError('')).__module__ == 'launch.frontend.parser'
+
+
+def test_the_load_error_composes_its_message_as_jazzy_does():
+    one = InvalidLaunchFileError('xml', likely_errors=[ValueError('a')])
+    two = InvalidLaunchFileError('py', likely_errors=[ValueError('a'), KeyError('k')])
+    assert str(one) == ('Caught exception when trying to load file of format [xml]:\n'
+                        ' - ValueError: a')
+    assert str(two) == ('Caught multiple exceptions when trying to load file of format [py]:\n'
+                        " - ValueError: a\n - KeyError: 'k'")
+    unknown = 'The launch file may have a syntax error, or its format is unknown'
+    assert str(InvalidLaunchFileError()) == str(InvalidLaunchFileError('xml')) == unknown
+    assert str(InvalidLaunchFileError('', likely_errors=[ValueError('a')])) == unknown
+    assert InvalidLaunchFileError().args == () and one.args == ('xml',)
 
 
 def test_if_and_unless_together(write):

@@ -6,9 +6,8 @@ and builds actions with the parse methods registered by `expose_action` /
 """
 from .entity import Entity
 from .expose import expose_action, expose_substitution
-from .load_errors import InvalidFrontendLaunchFileError
 from .parse_substitution import parse_if_substitutions, parse_substitution
-from .parser import Parser
+from .parser import InvalidFrontendLaunchFileError, Parser
 
 __all__ = [
     'Entity',

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..action import Action
 from ..actions import (
     AppendEnvironmentVariable,
     DeclareLaunchArgument,
@@ -21,7 +22,6 @@ from ..actions import (
     UnsetEnvironmentVariable,
     UnsetLaunchConfiguration,
 )
-from ..conditions import IfCondition, UnlessCondition
 from .command_line import split_command_line
 from .entity import Entity, EntityListType
 from .expose import register_action_parse_method
@@ -30,17 +30,9 @@ Parsed = tuple[type, dict[str, Any]]
 
 
 def parse_condition(entity: Entity, parser: Any) -> dict[str, Any]:
-    """The `if` / `unless` attributes every action accepts, as a `condition` kwarg."""
-    if_text = entity.get_attr('if', optional=True)
-    unless_text = entity.get_attr('unless', optional=True)
-    if if_text is not None and unless_text is not None:
-        raise RuntimeError("if and unless conditions can't be used simultaneously")
-    if if_text is not None:
-        return {'condition': IfCondition(predicate_expression=parser.parse_substitution(if_text))}
-    if unless_text is not None:
-        return {'condition': UnlessCondition(
-            predicate_expression=parser.parse_substitution(unless_text))}
-    return {}
+    """The `if` / `unless` attributes every action accepts, as a `condition` kwarg
+    (Action.parse's)."""
+    return Action.parse(entity, parser)[1]
 
 
 def optional_substitution(entity: Entity, name: str, parser: Any) -> list[Any] | None:

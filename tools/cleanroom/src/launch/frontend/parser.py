@@ -13,12 +13,12 @@ from importlib.metadata import entry_points
 from typing import Any, TextIO
 
 from ..action import Action
+from ..invalid_launch_file_error import InvalidLaunchFileError
 from ..launch_description import LaunchDescription
 from ..substitution import Substitution
 from . import launch_actions, launch_substitutions  # noqa: F401 - register launch's own tags
 from .entity import Entity
 from .expose import action_parse_methods, instantiate_action
-from .load_errors import UNKNOWN_FORMAT, InvalidFrontendLaunchFileError, describe_load_errors
 from .parse_substitution import parse_if_substitutions, parse_substitution
 
 PARSER_GROUP = 'launch.frontend.parser'
@@ -32,6 +32,10 @@ def _file_name(file: str | TextIO) -> str:
 def file_extension(file: str | TextIO) -> str:
     """'xml' for 'a.launch.xml'."""
     return os.path.splitext(_file_name(file))[1].lstrip('.')
+
+
+class InvalidFrontendLaunchFileError(InvalidLaunchFileError):
+    """No front end (XML, YAML) could read the launch file."""
 
 
 class Parser:
@@ -71,8 +75,7 @@ class Parser:
     def parse_description(self, entity: Entity) -> LaunchDescription:
         """Build the LaunchDescription of the root `launch` entity."""
         if entity.type_name != 'launch':
-            raise RuntimeError(
-                f"Expected 'launch' as root tag, got '{entity.type_name}' instead")
+            raise RuntimeError("Expected 'launch' as root tag")
         entity.get_attr('version', optional=True)
         actions = [self.parse_action(child) for child in entity.children]
         entity.assert_entity_completely_parsed()
@@ -120,21 +123,28 @@ class Parser:
 
     @classmethod
     def load(cls, file: str | TextIO) -> tuple[Entity, Parser]:
-        """Read the file with the parser of its extension, then with the others.
-
-        Every failure is reported: "Caught multiple exceptions ... [xml]:" with
-        one line per parser tried.
-        """
+        """Read the file (a path is opened first: a missing file is a FileNotFoundError)
+        with the parsers of its extension, then with every other; a file object is
+        read again from where it started for each.  When all fail: every parser's
+        error for a file of a known format, else 'the format is unknown'."""
         cls.load_parser_implementations()
-        matching = cls.get_parsers_from_filename(file)
-        if not matching:
-            raise InvalidFrontendLaunchFileError(UNKNOWN_FORMAT)
-        others = [p for p in (Parser.frontend_parsers or {}).values() if p not in matching]
+        implementations = list((Parser.frontend_parsers or {}).values())
+        extension = file_extension(file)
+        matching = [p for p in implementations if extension in p.get_file_extensions()]
         errors: list[BaseException] = []
-        for implementation in matching + others:
-            try:
-                return implementation.load(file)
-            except Exception as error:  # noqa: BLE001 - every failure is reported below
-                errors.append(error)
-        raise InvalidFrontendLaunchFileError(
-            describe_load_errors(file_extension(file), errors)) from errors[0]
+        stream = open(file) if isinstance(file, str) else file  # noqa: SIM115 - closed below
+        start = stream.tell() if stream.seekable() else None
+        try:
+            for implementation in matching + [p for p in implementations if p not in matching]:
+                if start is not None:
+                    stream.seek(start)
+                try:
+                    return implementation.load(stream)
+                except Exception as error:  # noqa: BLE001 - every failure is reported below
+                    errors.append(error)
+        finally:
+            if stream is not file:
+                stream.close()
+        if not matching:
+            raise InvalidFrontendLaunchFileError('')
+        raise InvalidFrontendLaunchFileError(extension, likely_errors=errors) from errors[0]

@@ -4,8 +4,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 
-from ..frontend.load_errors import InvalidFrontendLaunchFileError, describe_load_errors
-from ..frontend.parser import Parser
+from ..frontend.parser import InvalidFrontendLaunchFileError, Parser
 from ..invalid_launch_file_error import InvalidLaunchFileError
 from ..launch_description import LaunchDescription
 from .frontend_launch_file_utilities import get_launch_description_from_frontend_launch_file
@@ -19,8 +18,9 @@ def get_launch_description_from_any_launch_file(
     """Try the loader the extension suggests first, then the other; report every failure.
 
     `.py` files are tried as Python, then as a front end; anything else the
-    other way round.  When both fail the error lists one ' - Type: message'
-    line per loader (Jazzy's "Caught multiple exceptions ..." text).
+    other way round.  When both fail, a file of a known format gets one
+    ' - Type: message' line per loader (Jazzy's "Caught multiple exceptions
+    ..." text); any other file 'the format is unknown'.
     """
     def frontend(path: str) -> LaunchDescription:
         return get_launch_description_from_frontend_launch_file(path, parser=parser)
@@ -36,4 +36,6 @@ def get_launch_description_from_any_launch_file(
             return loader(launch_file_path)
         except Exception as error:  # noqa: BLE001 - every failure is reported below
             errors.append(error)
-    raise InvalidLaunchFileError(describe_load_errors(extension, errors)) from errors[0]
+    if extension != 'py' and not parser.is_filename_valid(launch_file_path):
+        raise InvalidLaunchFileError('')
+    raise InvalidLaunchFileError(extension, likely_errors=errors) from errors[0]

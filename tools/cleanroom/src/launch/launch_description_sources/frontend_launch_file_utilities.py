@@ -1,8 +1,7 @@
 """Load a front-end (XML, YAML) launch file into a LaunchDescription."""
 from __future__ import annotations
 
-from ..frontend.load_errors import InvalidFrontendLaunchFileError
-from ..frontend.parser import Parser
+from ..frontend.parser import InvalidFrontendLaunchFileError, Parser
 from ..launch_description import LaunchDescription
 
 __all__ = ['InvalidFrontendLaunchFileError', 'get_launch_description_from_frontend_launch_file']
