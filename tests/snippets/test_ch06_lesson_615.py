@@ -71,7 +71,7 @@ def test_colcon_test_passes_on_the_package(tmp_path, run_env):
     result, outcomes = _colcon_test(tmp_path, env)
     assert result.returncode == 0, result.stdout + result.stderr
     assert outcomes == dict.fromkeys(ALL_TESTS, 'passed'), outcomes
-    assert re.search(r'Summary: 5 tests, 0 errors, 0 failures, 0 skipped', result.stdout), \
+    assert re.search(r'Summary: 6 tests, 0 errors, 0 failures, 0 skipped', result.stdout), \
         result.stdout
 
 
@@ -82,7 +82,7 @@ def test_colcon_test_names_the_spec_tests_on_the_planted_rate(tmp_path, run_env)
     assert {name for name, outcome in outcomes.items() if outcome == 'failed'} == SPEC_TESTS, \
         outcomes
     assert set(outcomes) == ALL_TESTS
-    assert 'Summary: 5 tests, 0 errors, 1 failure, 0 skipped' in result.stdout, result.stdout
+    assert 'Summary: 6 tests, 0 errors, 1 failure, 0 skipped' in result.stdout, result.stdout
     # the report a student reads names the argument and the parameter of R2
     assert "argument battery_rate: default '2.0', the spec says '5.0'" in result.stdout
 

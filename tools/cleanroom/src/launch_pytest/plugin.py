@@ -1,7 +1,11 @@
 """pytest plugin of launch_pytest (registered through the pytest11 entry point).
 
 It acts only on tests marked `@pytest.mark.launch(...)`; every other test of a
-session is left alone.
+session is left alone.  As in Jazzy, a test that yields, against a launch
+fixture that outlives one test (scope module, class, session), is two items of
+the same name: the code before `yield` runs in place while the launch runs, the
+code after it among the shutdown tests, once the launch has been shut down
+(skipped when the first part failed).
 """
 from __future__ import annotations
 
@@ -13,6 +17,9 @@ from .fixture import fixture_name
 from .launch_runner import LaunchRunner, runner_of
 
 MARKER = 'launch'
+SKIPPED_SHUTDOWN = 'shutdown test skipped because the test failed before'
+#: The first part of a split yielding test -> its generator, once that part passed.
+_PENDING: dict[int, object] = {}
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -67,8 +74,30 @@ def pytest_collection_modifyitems(session, config, items) -> None:
     for index, item in enumerate(items):
         module_order.setdefault(getattr(item, 'path', None), index)
     order = {id(item): index for index, item in enumerate(items)}
+    for item in [item for item in marked if _split(item)]:
+        twin = pytest.Function.from_parent(
+            item.parent, name=item.name, callspec=getattr(item, 'callspec', None),
+            callobj=item.obj, fixtureinfo=item._fixtureinfo, originalname=item.originalname)
+        twin._launch_pytest_first_part = item
+        order[id(twin)] = order[id(item)]
+        items.append(twin)
     items.sort(key=lambda item: (module_order[getattr(item, 'path', None)],
-                                 _is_shutdown_test(item), order[id(item)]))
+                                 _is_shutdown_test(item) or _is_second_part(item),
+                                 order[id(item)]))
+
+
+def _split(item: pytest.Item) -> bool:
+    """Whether ``item`` yields against a launch that outlives it: two items, as in Jazzy."""
+    function = getattr(item, 'obj', None)
+    if _is_shutdown_test(item) or not (inspect.isgeneratorfunction(function)
+                                       or inspect.isasyncgenfunction(function)):
+        return False
+    definitions = item.session._fixturemanager.getfixturedefs(_launch_fixture_name(item), item)
+    return bool(definitions) and definitions[-1].scope != 'function'
+
+
+def _is_second_part(item: pytest.Item) -> bool:
+    return getattr(item, '_launch_pytest_first_part', None) is not None
 
 
 def _runner(request: pytest.FixtureRequest, item: pytest.Item) -> LaunchRunner:
@@ -103,11 +132,21 @@ def pytest_pyfunc_call(pyfuncitem: pytest.Function):
     runner = _runner(pyfuncitem._request, pyfuncitem)
     function = pyfuncitem.obj
     kwargs = {name: pyfuncitem.funcargs[name] for name in pyfuncitem._fixtureinfo.argnames}
+    if _is_second_part(pyfuncitem):
+        _second_part(runner, pyfuncitem)
+        return True
     if not runner.finished.is_set():
         runner.wait_until_ready()
     if _is_shutdown_test(pyfuncitem):
         runner.stop()
-    if inspect.iscoroutinefunction(function):
+    if _split(pyfuncitem):
+        generator = function(**kwargs)
+        if inspect.isasyncgen(generator):
+            runner.run_coroutine(generator.__anext__())
+        else:
+            next(generator)
+        _PENDING[id(pyfuncitem)] = generator
+    elif inspect.iscoroutinefunction(function):
         runner.run_coroutine(function(**kwargs))
     elif inspect.isasyncgenfunction(function):
         generator = function(**kwargs)
@@ -128,6 +167,22 @@ def pytest_pyfunc_call(pyfuncitem: pytest.Function):
     else:
         function(**kwargs)
     return True
+
+
+def _second_part(runner: LaunchRunner, item: pytest.Item) -> None:
+    """The code after the yield of a split test, with the launch shut down."""
+    generator = _PENDING.pop(id(item._launch_pytest_first_part), None)
+    if generator is None:
+        pytest.skip(SKIPPED_SHUTDOWN)
+    runner.stop()
+    if inspect.isasyncgen(generator):
+        _finish_async(runner, generator, item)
+        return
+    try:
+        next(generator)
+    except StopIteration:
+        return
+    pytest.fail(f'{item.nodeid}: a launch test must yield only once', pytrace=False)
 
 
 def _finish_async(runner: LaunchRunner, generator, item: pytest.Item) -> None:

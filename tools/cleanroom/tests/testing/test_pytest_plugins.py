@@ -34,6 +34,23 @@ def test_launch_pytest_tests(run):
     assert order.index('test_after_shutdown') > order.index('test_times_out')
 
 
+def test_a_yielding_test_of_a_module_launch_is_two_items(run):
+    """As Jazzy: the part before yield runs in place, the part after it among the
+    shutdown tests (in the order of the file), skipped when the first part failed."""
+    result = run(*PYTEST, '-v', '-o', 'python_files=lp_*.py', 'lp_split.py')
+    assert result.returncode == 1, result.stdout
+    # (the launch, in its own thread, may print a line right after a test's name)
+    shown = re.sub(r'\[(?:INFO|ERROR)\] \[[\w.-]+\]: [^\n]*\n', '', result.stdout)
+    ran = re.findall(r'^lp_split\.py::(\w+) .*?(PASSED|FAILED|SKIPPED)', shown, re.M)
+    assert ran == [('test_b_both_parts_pass', 'PASSED'), ('test_c_fails_before', 'FAILED'),
+                   ('test_d_fails_after', 'PASSED'), ('test_e_plain', 'PASSED'),
+                   ('test_a_shutdown', 'PASSED'), ('test_b_both_parts_pass', 'PASSED'),
+                   ('test_c_fails_before', 'SKIPPED'), ('test_d_fails_after', 'FAILED')], \
+        result.stdout
+    assert 'shutdown test skipped because the test failed before' in result.stdout
+    assert '2 failed, 5 passed, 1 skipped' in result.stdout
+
+
 def test_launch_testing_file_collected_by_pytest(run, tmp_path):
     report = tmp_path / 'pytest.xml'
     result = run(*PYTEST, '-o', 'python_files=lt_*.py', f'--junit-xml={report}',
