@@ -116,6 +116,8 @@ def test_where_an_install_keeps_python_is_not_a_difference():
         '  File "site-packages/rclpy/node.py", line 388, in declare_parameter']
     shown = '~/ros2-launch-textbook/.venv/bin/python ~/ros2-launch-textbook/build/ws/x'
     assert normalise(shown) == ['python3 ~/ros2-launch-textbook/build/ws/x']
+    assert normalise('running but not in the spec: /launch_ros_11575') == [
+        'running but not in the spec: /launch_ros_PID']
     assert normalise('[WARN] [_ros2cli_20479]: GID: 01.0f.78.fd.d5') == [
         '[WARN] [_ros2cli_PID]: GID: …']
 

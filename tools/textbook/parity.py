@@ -69,6 +69,8 @@ _VARYING = [
     (re.compile(r'^(Ran \d+ tests? in )\d+\.\d+s$', re.M), r'\1…s'),
     (re.compile(r'^(=* ?\d+ (?:passed|failed|error|errors|skipped|deselected)\b.* in )'
                 r'\d+\.\d+s(?: \(\d+:\d\d:\d\d\))?( ?=*)$', re.M), r'\1…s\2'),
+    # the launch process's own node carries its pid: `/launch_ros_11575`
+    (re.compile(r'\blaunch_ros_\d+'), 'launch_ros_PID'),
     # ros2cli's hidden node carries the pid of the command: `_ros2cli_20479`
     (re.compile(r'\b_ros2cli_\d+'), '_ros2cli_PID'),
     # an endpoint's GID is made up when the endpoint is created
