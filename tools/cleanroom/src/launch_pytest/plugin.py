@@ -75,6 +75,7 @@ def pytest_collection_modifyitems(session, config, items) -> None:
         module_order.setdefault(getattr(item, 'path', None), index)
     order = {id(item): index for index, item in enumerate(items)}
     for item in [item for item in marked if _split(item)]:
+        item._launch_pytest_split = True
         twin = pytest.Function.from_parent(
             item.parent, name=item.name, callspec=getattr(item, 'callspec', None),
             callobj=item.obj, fixtureinfo=item._fixtureinfo, originalname=item.originalname)
@@ -139,31 +140,16 @@ def pytest_pyfunc_call(pyfuncitem: pytest.Function):
         runner.wait_until_ready()
     if _is_shutdown_test(pyfuncitem):
         runner.stop()
-    if _split(pyfuncitem):
+    if getattr(pyfuncitem, '_launch_pytest_split', False):
         generator = function(**kwargs)
-        if inspect.isasyncgen(generator):
-            runner.run_coroutine(generator.__anext__())
-        else:
-            next(generator)
+        _to_yield(runner, generator)
         _PENDING[id(pyfuncitem)] = generator
     elif inspect.iscoroutinefunction(function):
         runner.run_coroutine(function(**kwargs))
-    elif inspect.isasyncgenfunction(function):
+    elif inspect.isasyncgenfunction(function) or inspect.isgeneratorfunction(function):
         generator = function(**kwargs)
-        runner.run_coroutine(generator.__anext__())
-        runner.stop()
-        _finish_async(runner, generator, pyfuncitem)
-    elif inspect.isgeneratorfunction(function):
-        generator = function(**kwargs)
-        next(generator)
-        runner.stop()
-        try:
-            next(generator)
-        except StopIteration:
-            pass
-        else:
-            pytest.fail(f'{pyfuncitem.nodeid}: a launch test must yield only once',
-                        pytrace=False)
+        _to_yield(runner, generator)
+        _after_yield(runner, generator, pyfuncitem)
     else:
         function(**kwargs)
     return True
@@ -174,20 +160,25 @@ def _second_part(runner: LaunchRunner, item: pytest.Item) -> None:
     generator = _PENDING.pop(id(item._launch_pytest_first_part), None)
     if generator is None:
         pytest.skip(SKIPPED_SHUTDOWN)
-    runner.stop()
+    _after_yield(runner, generator, item)
+
+
+def _to_yield(runner: LaunchRunner, generator) -> None:
+    """Run a yielding test (sync or async) up to its yield, with the launch up."""
     if inspect.isasyncgen(generator):
-        _finish_async(runner, generator, item)
-        return
-    try:
-        next(generator)
-    except StopIteration:
-        return
-    pytest.fail(f'{item.nodeid}: a launch test must yield only once', pytrace=False)
-
-
-def _finish_async(runner: LaunchRunner, generator, item: pytest.Item) -> None:
-    try:
         runner.run_coroutine(generator.__anext__())
-    except StopAsyncIteration:
+    else:
+        next(generator)
+
+
+def _after_yield(runner: LaunchRunner, generator, item: pytest.Item) -> None:
+    """Shut the launch down, then run the rest of a yielding test; it may yield once."""
+    runner.stop()
+    try:
+        if inspect.isasyncgen(generator):
+            runner.run_coroutine(generator.__anext__())
+        else:
+            next(generator)
+    except (StopIteration, StopAsyncIteration):
         return
     pytest.fail(f'{item.nodeid}: a launch test must yield only once', pytrace=False)
