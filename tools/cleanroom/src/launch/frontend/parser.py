@@ -127,10 +127,8 @@ class Parser:
         with the parsers of its extension, then with every other; a file object is
         read again from where it started for each.  When all fail: every parser's
         error for a file of a known format, else 'the format is unknown'."""
-        cls.load_parser_implementations()
+        matching = cls.get_parsers_from_filename(file)  # loads the implementations
         implementations = list((Parser.frontend_parsers or {}).values())
-        extension = file_extension(file)
-        matching = [p for p in implementations if extension in p.get_file_extensions()]
         errors: list[BaseException] = []
         stream = open(file) if isinstance(file, str) else file  # noqa: SIM115 - closed below
         start = stream.tell() if stream.seekable() else None
@@ -147,4 +145,5 @@ class Parser:
                 stream.close()
         if not matching:
             raise InvalidFrontendLaunchFileError('')
-        raise InvalidFrontendLaunchFileError(extension, likely_errors=errors) from errors[0]
+        raise InvalidFrontendLaunchFileError(file_extension(file),
+                                             likely_errors=errors) from errors[0]
