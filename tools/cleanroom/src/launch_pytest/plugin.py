@@ -12,6 +12,7 @@ from __future__ import annotations
 import inspect
 
 import pytest
+from _pytest.fixtures import FixtureManager
 
 from .fixture import fixture_name
 from .launch_runner import LaunchRunner, runner_of
@@ -20,6 +21,9 @@ MARKER = 'launch'
 SKIPPED_SHUTDOWN = 'shutdown test skipped because the test failed before'
 #: The first part of a split yielding test -> its generator, once that part passed.
 _PENDING: dict[int, object] = {}
+#: pytest 8.1 made FixtureManager.getfixturedefs take the node instead of its node id
+#: (Ubuntu 24.04, where Jazzy runs, has pytest 7.4.4).
+_GETFIXTUREDEFS_TAKES_NODE = 'node' in inspect.signature(FixtureManager.getfixturedefs).parameters
 
 
 def pytest_configure(config: pytest.Config) -> None:
@@ -93,7 +97,9 @@ def _split(item: pytest.Item) -> bool:
     if _is_shutdown_test(item) or not (inspect.isgeneratorfunction(function)
                                        or inspect.isasyncgenfunction(function)):
         return False
-    definitions = item.session._fixturemanager.getfixturedefs(_launch_fixture_name(item), item)
+    manager = item.session._fixturemanager
+    where = item if _GETFIXTUREDEFS_TAKES_NODE else item.nodeid
+    definitions = manager.getfixturedefs(_launch_fixture_name(item), where)
     return bool(definitions) and definitions[-1].scope != 'function'
 
 
