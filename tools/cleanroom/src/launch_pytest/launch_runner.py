@@ -50,6 +50,7 @@ class LaunchRunner:
             description.add_action(ReadyToTest())  # as documented: appended when missing
         self.service = launch.LaunchService()
         self.ready = threading.Event()
+        self.started = threading.Event()
         self.finished = threading.Event()
         self.return_code: int | None = None
         self.loop = asyncio.new_event_loop()
@@ -64,14 +65,15 @@ class LaunchRunner:
         return self.service.context
 
     def start(self) -> None:
-        """Start the launch on its thread."""
+        """Start the launch on its thread; return once the service runs (as in Jazzy, its
+        first log lines belong to the fixture's setup, not to the first test)."""
         self._thread.start()
+        self.started.wait(READY_TIMEOUT)
 
     def _run(self) -> None:
         asyncio.set_event_loop(self.loop)
         try:
-            self.return_code = self.loop.run_until_complete(
-                self.service.run_async(shutdown_when_idle=False))
+            self.return_code = self.loop.run_until_complete(self._serve())
         finally:
             tasks = [t for t in asyncio.all_tasks(self.loop) if not t.done()]
             for task in tasks:
@@ -79,7 +81,14 @@ class LaunchRunner:
             if tasks:
                 self.loop.run_until_complete(asyncio.gather(*tasks, return_exceptions=True))
             self.loop.close()
+            self.started.set()
             self.finished.set()
+
+    async def _serve(self) -> int:
+        service = asyncio.ensure_future(self.service.run_async(shutdown_when_idle=False))
+        await asyncio.sleep(0)  # the service's first step ran: it logged where its logs go
+        self.started.set()
+        return await service
 
     def wait_until_ready(self, timeout: float = READY_TIMEOUT) -> None:
         """Block until ReadyToTest ran; fail if the launch ended or took too long."""

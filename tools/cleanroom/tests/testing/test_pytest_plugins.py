@@ -88,3 +88,15 @@ def test_only_launch_testing_files_are_taken(tmp_path):
     assert not is_launch_test_file(ordinary)
     assert not is_launch_test_file(broken)
     assert not is_launch_test_file(Path(__file__))
+
+
+def test_the_launchs_first_lines_belong_to_the_fixtures_setup(run):
+    """As Jazzy: the launch has logged where its logs go and its verbosity before the
+    fixture's setup ends, so no line of it leaks between pytest's phases (with -q a
+    leaked line stood above the dots)."""
+    result = run(*PYTEST, '-q', '--color=no', '-o', 'python_files=lp_*.py', 'lp_setup_lines.py')
+    assert result.returncode == 0, result.stdout
+    setup = result.stdout.split('Captured stdout setup')[1].split('Captured stdout call')[0]
+    assert '[INFO] [launch]: All log files can be found below' in setup, result.stdout
+    assert '[INFO] [launch]: Default logging verbosity is set to INFO' in setup, result.stdout
+    assert not result.stdout.startswith('['), result.stdout
