@@ -134,6 +134,18 @@ def _live(spec: Path, env: dict[str, str]) -> subprocess.CompletedProcess:
         env=env, capture_output=True, text=True, timeout=180, check=False)
 
 
+def _what_the_watchdog_sees(env: dict[str, str]) -> str:
+    """What the draft's watchdog polls (`ros2 node list`, through the daemon) and the
+    graph without the daemon: evidence for a watchdog that never saw turtlesim go."""
+    views = []
+    for command in (['ros2', 'node', 'list'], ['ros2', 'node', 'list', '--no-daemon']):
+        done = subprocess.run(command, env=env, capture_output=True, text=True, timeout=60,
+                              check=False)
+        views.append(f'$ {" ".join(command)}  (exit {done.returncode})\n'
+                     f'{done.stdout}{done.stderr}')
+    return '\n'.join(views)
+
+
 def _assert_meets(spec: Path, done: subprocess.CompletedProcess) -> None:
     report = done.stdout + done.stderr
     assert done.returncode == 0, report
@@ -239,7 +251,11 @@ def test_sim_false_the_draft_meets_the_spec_and_stops_without_turtlesim(ros_env)
             draft.wait_for_output(_waypoint(robot), timeout=HANG_GUARD)
         done = _live(SPEC, ros_env)
         world.stop()
-        draft.wait_for_output(r'/turtlesim is not running -> shutting down', timeout=HANG_GUARD)
+        try:
+            draft.wait_for_output(r'/turtlesim is not running -> shutting down',
+                                  timeout=HANG_GUARD)
+        except labkit.LabkitError as error:
+            raise AssertionError(f'{error}\n\n{_what_the_watchdog_sees(ros_env)}') from None
         draft.wait(timeout=HANG_GUARD)
     _assert_meets(SPEC, done)
     assert not [line for line in draft.lines if 'turtlesim_node' in line], draft.output()
