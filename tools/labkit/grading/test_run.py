@@ -41,14 +41,21 @@ def run_test(test_file: Path, env: dict[str, str], cwd: Path) -> subprocess.Comp
 
 
 def summary(result: subprocess.CompletedProcess) -> str:
-    """The tests that did not pass, with the first reason given, from the report."""
+    """The first test that did not pass, with the first reason given, from the report.
+
+    Only the first: it decided the run (active tests run, and report, before the
+    post-shutdown ones).  What failed after it can depend on the moment of the
+    shutdown (a respawning node that crashes at every start is dead or starting),
+    and a verdict must read the same on every run and on every ROS 2 install.
+    """
     failed = [f'{name} {outcome}' for name, outcome in VERDICT_LINE.findall(result.stderr)
               if outcome != 'ok']
     reasons = REASON_LINE.findall(result.stderr)
     if not failed:
-        tail = (result.stderr.strip() or result.stdout.strip()).splitlines()[-3:]
+        tail = [line for line in (result.stderr or result.stdout).splitlines()
+                if line.strip()][-3:]
         return 'no test failed; the run ended with: ' + (' | '.join(tail) or 'nothing')
-    return ', '.join(failed) + (f' ({reasons[0]})' if reasons else '')
+    return failed[0] + (f' ({reasons[0]})' if reasons else '')
 
 
 def grade_against_defects(package: StudentPackage, verdict: Verdict, *, test_file: Path,
