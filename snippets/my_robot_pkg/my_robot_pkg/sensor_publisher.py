@@ -33,8 +33,9 @@ class SensorPublisher(Node):
         # An obstacle that drifts between 1.5 m and 2.5 m.
         distance = 2.0 + 0.5 * math.sin(self.count / 2.0)
         self.count += 1
-        self.publisher.publish(Float32(data=distance))
+        # Log first, then publish: the reading's line comes before the subscriber's.
         self.get_logger().info(f'Reading #{self.count}: {distance:.2f} m')
+        self.publisher.publish(Float32(data=distance))
 
 
 def main(args=None):
