@@ -1,47 +1,19 @@
 """Waiting for a state in tests: poll until it holds, fail naming it if it never does.
 
-The one polling loop of the tests: `wait_for` fails the test when the state never
-comes; `poll` hands back the last look instead, for a test whose assertion says
-more than "gave up" (and it can stop early, e.g. when the process watched has ended).
+`poll` and `wait_for` are the one polling loop of all the tests, kept with the
+clean room's tests (tools/cleanroom/tests/_polling.py), which import nothing of the
+book; they are importable here as `cleanroom.tests._polling` because the root's
+editable install puts tools/ on sys.path.  `wait_for` fails the test when the
+state never comes; `poll` hands back the last look instead, for a test whose
+assertion says more than "gave up" (and it can stop early, e.g. when the process
+watched has ended).  `still_running` is the book's own.
 """
 from __future__ import annotations
 
-import time
-from collections.abc import Callable
-from typing import TypeVar
-
 import psutil
-import pytest
+from cleanroom.tests._polling import poll, wait_for
 
-T = TypeVar('T')
-INTERVAL = 0.1
-
-
-def _sleep() -> None:
-    time.sleep(INTERVAL)
-
-
-def poll(predicate: Callable[[], T], timeout: float,
-         stop: Callable[[], bool] = lambda: False, pause: Callable[[], None] = _sleep) -> T:
-    """Call ``predicate`` until it gives a true value, ``stop()`` holds or ``timeout``
-    seconds have passed; return its last value (a state, not a duration).  Between
-    looks it calls ``pause`` (a short sleep; or spinning an executor, for a test
-    whose state arrives in callbacks)."""
-    deadline = time.monotonic() + timeout
-    while True:
-        value = predicate()
-        if value or stop() or time.monotonic() >= deadline:
-            return value
-        pause()
-
-
-def wait_for(predicate: Callable[[], T], timeout: float, what: str,
-             pause: Callable[[], None] = _sleep) -> T:
-    """Poll ``predicate`` until it gives a true value; fail naming ``what`` if it never does."""
-    value = poll(predicate, timeout, pause=pause)
-    if not value:
-        pytest.fail(f'gave up after {timeout} s waiting for {what}')
-    return value
+__all__ = ['poll', 'still_running', 'wait_for']
 
 
 def still_running(pids: list[int]) -> list[int]:

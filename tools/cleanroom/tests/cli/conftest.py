@@ -12,12 +12,12 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import psutil
 import pytest
+from _polling import wait_for
 from launch_testing.domain_isolation import lease_domain
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')
@@ -62,15 +62,11 @@ def _wait_for_the_daemon_listing(args: tuple[str, ...], expected: list[str],
     """Wait until the running daemon's `ros2 ARGS` output holds every `expected` line,
     as a user re-runs a listing until what they just started shows up (the daemon
     answers with what discovery has brought it so far: nodes before their topics)."""
-    deadline = time.monotonic() + timeout
-    while True:
+    def lists_every_line() -> bool:
         listed = subprocess.run([ROS2, *args], env=env, capture_output=True, text=True,
                                 check=False).stdout.splitlines()
-        missing = [line for line in expected if line not in listed]
-        if not missing:
-            return
-        assert time.monotonic() < deadline, f'the ros2 daemon never listed {missing}'
-        time.sleep(0.2)
+        return all(line in listed for line in expected)
+    wait_for(lists_every_line, timeout, f'the ros2 daemon to list {expected}')
 
 
 def _wait_for_the_daemon(node: str, env: dict[str, str]) -> None:

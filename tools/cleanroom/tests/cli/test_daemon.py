@@ -3,9 +3,8 @@ the first listing starts the daemon, later ones get its graph at once, and
 `start|stop|status` answer in Jazzy's words with exit code 0."""
 from __future__ import annotations
 
-import time
-
 import psutil
+from _polling import wait_for
 
 DAEMON_HELP = """\
 usage: ros2 daemon [-h]
@@ -49,10 +48,8 @@ def test_start_stop_and_status_in_jazzys_words(ros2, cli_env):
     assert len(_daemon_processes(cli_env['ROS_DOMAIN_ID'])) == 1
     assert _said(ros2('daemon', 'stop')) == (0, 'The daemon has been stopped\n')
     assert _said(ros2('daemon', 'stop')) == (0, 'The daemon is not running\n')
-    deadline = time.monotonic() + 10
-    while _daemon_processes(cli_env['ROS_DOMAIN_ID']) and time.monotonic() < deadline:
-        time.sleep(0.1)
-    assert not _daemon_processes(cli_env['ROS_DOMAIN_ID'])
+    wait_for(lambda: not _daemon_processes(cli_env['ROS_DOMAIN_ID']), 10,
+             "the stopped daemon's process to end")
 
 
 def test_without_a_verb_it_prints_its_help(ros2):
@@ -64,10 +61,8 @@ def test_the_first_listing_starts_the_daemon_and_no_daemon_starts_none(ros2):
     ros2('node', 'list', '--no-daemon')
     assert ros2('daemon', 'status').stdout == 'The daemon is not running\n'
     ros2('node', 'list')
-    deadline = time.monotonic() + 10
-    while ros2('daemon', 'status').stdout != 'The daemon is running\n':
-        assert time.monotonic() < deadline, 'the first listing started no daemon'
-        time.sleep(0.2)
+    wait_for(lambda: ros2('daemon', 'status').stdout == 'The daemon is running\n', 10,
+             'the daemon the first listing starts to run')
 
 
 def test_the_daemons_graph_counts_its_own_node(ros2):
@@ -84,10 +79,8 @@ def test_the_daemons_graph_counts_its_own_node(ros2):
 def test_the_daemon_sees_a_node_started_after_it_and_describes_it(ros2, start_node):
     ros2('daemon', 'start')
     start_node('talker')
-    deadline = time.monotonic() + 15
-    while '/sensor_publisher' not in ros2('node', 'list').stdout.split():
-        assert time.monotonic() < deadline, 'the daemon never listed the new node'
-        time.sleep(0.2)
+    wait_for(lambda: '/sensor_publisher' in ros2('node', 'list').stdout.split(), 15,
+             'the daemon to list the new node')
     through_daemon = ros2('topic', 'info', '-v', '/chatter').stdout
     direct = ros2('topic', 'info', '-v', '/chatter', '--no-daemon').stdout
 

@@ -8,10 +8,10 @@ nothing), and a publisher on /lonely nobody reads.
 from __future__ import annotations
 
 import re
-import time
 from types import SimpleNamespace
 
 import pytest
+from _polling import wait_for
 from rclpy.qos import QoSCompatibility, QoSProfile
 from ros2_cleanroom.doctor_graph import (
     QosPair,
@@ -35,9 +35,8 @@ def nodes(start_node, ros2):
         start_node(kind)
     # Endpoints can be discovered before their node's name (ros2 then prints
     # _NODE_NAME_UNKNOWN_, as Jazzy does); the tests read a settled graph.
-    deadline = time.monotonic() + 30
-    while '_NODE_NAME_UNKNOWN_' in ros2('topic', 'info', '-v', '/qos_topic').stdout:
-        assert time.monotonic() < deadline, 'node names of /qos_topic never discovered'
+    wait_for(lambda: '_NODE_NAME_UNKNOWN_' not in ros2('topic', 'info', '-v', '/qos_topic').stdout,
+             30, 'the node names of /qos_topic to be discovered')
 
 
 def warnings_of(stderr: str) -> list[str]:

@@ -2,9 +2,8 @@
 counted twice) and warns about the shared name on standard error."""
 from __future__ import annotations
 
-import time
-
 import pytest
+from _polling import wait_for
 
 SHARED_NAME = ('WARNING: Be aware that there are nodes in the graph that share an exact name, '
                'which can have unintended side effects.\n')
@@ -15,10 +14,9 @@ def two_talkers_and_a_listener(start_node, ros2):
     start_node('talker')
     start_node('talker')
     start_node('listener')
-    deadline = time.monotonic() + 15.0  # until the daemon has seen the second talker too
-    while ros2('node', 'list', '--count-nodes').stdout != '3\n':
-        assert time.monotonic() < deadline, 'the daemon never listed both talkers'
-        time.sleep(0.2)
+    # until the daemon has seen the second talker too
+    wait_for(lambda: ros2('node', 'list', '--count-nodes').stdout == '3\n', 15.0,
+             'the daemon to list both talkers')
 
 
 def test_each_node_is_a_line_and_the_shared_name_is_warned_about(ros2):

@@ -6,11 +6,11 @@ import os
 import signal
 import subprocess
 import sys
-import time
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pytest
+from _polling import wait_for
 from ros2_cleanroom.param_file import flatten, read_parameter_file, to_parameter_value
 from ros2_cleanroom.param_values import describe
 
@@ -201,13 +201,18 @@ def nodes(cli_env: dict[str, str]) -> Iterator[Callable[..., None]]:
 
 
 @pytest.fixture(scope='module')
-def graph(nodes: Callable[..., None]) -> None:
-    """The module's nodes: /described, /open, /layered and /layered_b (its copy)."""
+def graph(nodes: Callable[..., None],
+          ros2: Callable[..., subprocess.CompletedProcess]) -> None:
+    """The module's nodes: /described, /open, /layered and /layered_b (its copy),
+    each discovered and answering its parameter services (a node prints `ready`
+    before it spins)."""
     nodes(EXTRA_NODES, 'described')
     nodes(EXTRA_NODES, 'open')
     nodes(SAMPLE_NODES, 'layered')
     nodes(SAMPLE_NODES, 'layered', '--ros-args', '-r', '__node:=layered_b')
-    time.sleep(0.5)
+    listed = {'/described:', '/open:', '/layered:', '/layered_b:'}
+    wait_for(lambda: listed <= set(ros2('param', 'list').stdout.splitlines()), 15,
+             'every node of the module to answer `ros2 param list` with its parameters')
 
 
 @pytest.mark.parametrize(('args', 'expected'), [
