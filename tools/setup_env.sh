@@ -95,11 +95,12 @@ trap 'rm -f "$reqs" "$constraints"' EXIT
 cp "$root/requirements/lock.txt" "$constraints"
 if [ "$USE_SYSTEM_ROS" = 1 ]; then
   "$python" -m venv --clear --system-site-packages "$venv"
-  # ROS 2, CMake, colcon and (where the system has it) pytest come from the
-  # system, as a ROS user has them: a lesson's `python -m pytest` and `colcon
-  # test` load Jazzy's launch_testing plugin, which a newer pytest than the
-  # system's (Ubuntu 24.04: 7.4.4) refuses ("Argument(s) {'path'} are declared
-  # in the hookimpl but can not be found in the hookspec").
+  # ROS 2, CMake and (where the system has it) pytest come from the system, as
+  # a ROS user has them: a lesson's `python -m pytest` and `colcon test` load
+  # Jazzy's launch_testing plugin, which a newer pytest than the system's
+  # (Ubuntu 24.04: 7.4.4) refuses ("Argument(s) {'path'} are declared in the
+  # hookimpl but can not be found in the hookspec").  colcon is the exception
+  # (below).
   drop='ros-|cmake$|colcon-'
   if "$venv/bin/python" -c 'import pytest' 2>/dev/null; then
     drop="$drop|pytest$"
@@ -122,6 +123,15 @@ pip=("$venv/bin/python" -m pip --disable-pip-version-check -q)
 if [ "$USE_SYSTEM_ROS" = 0 ]; then
   "${pip[@]}" install -c "$constraints" -e "$root/tools/cleanroom"
   make_venv_a_ros_prefix
+else
+  # colcon itself goes into the venv too, as docs.ros.org's "Using Python
+  # Packages with ROS 2" does for a venv: the system's colcon runs the system's
+  # python, so `colcon test` could not import the book's tools (6.15's package
+  # test imports speccheck: "collection failure").  The system's colcon is
+  # visible to pip here, hence --ignore-installed; its dependencies are the
+  # system's (--no-deps).
+  grep -E '^colcon-' "$root/requirements/lock.txt" > "$reqs"
+  "${pip[@]}" install --no-deps --ignore-installed -r "$reqs"
 fi
 build_ddsfix
 "$venv/bin/python" -m ipykernel install --sys-prefix --name python3 >/dev/null
