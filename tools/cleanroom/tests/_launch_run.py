@@ -5,13 +5,14 @@ session leftover check (launch/, launch_ros/) and testing/'s per-test check.
 """
 from __future__ import annotations
 
+import itertools
 import sys
 from typing import Any
 
 import psutil
 import pytest
 import yaml
-from launch import LaunchDescription, LaunchService
+from launch import LaunchDescription, LaunchService, launch_context
 from launch.actions import RegisterEventHandler, Shutdown, TimerAction
 from launch.event_handlers import OnProcessStart
 
@@ -109,6 +110,9 @@ def run_in_process(capture: pytest.CaptureFixture, entities: list, *, argv: tupl
     extra = [] if shutdown_after is None else [
         TimerAction(period=shutdown_after, actions=[Shutdown(reason='test done')])]
     earlier = capture.readouterr()
+    # Number processes from 1, as `ros2 launch` (a Python process of its own) does:
+    # the count goes on across the launches of one Python process (launch_context).
+    launch_context._PROCESS_NUMBERS = itertools.count(1)
     service = LaunchService(argv=list(argv), debug=debug)
     service.include_launch_description(LaunchDescription(
         [RegisterEventHandler(OnProcessStart(on_start=on_start)), *entities, *extra]))

@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import asyncio
 import collections
+import itertools
 import os
 import threading
 from collections.abc import Callable, Iterable
@@ -12,6 +13,10 @@ from typing import Any
 from .event import Event
 from .event_handler import BaseEventHandler
 from .logging import get_logger
+
+#: The N of `name-N`, counted across every launch of this Python process.
+_PROCESS_NUMBERS = itertools.count(1)
+_PROCESS_NUMBERS_LOCK = threading.Lock()
 
 _SPAWNER_THREADS = 4
 
@@ -61,7 +66,6 @@ class LaunchContext:
         self.__environment_stack: list[dict[str, str]] = []
         self.__environment: dict[str, str] = dict(self.__initial_environment)
         self.__is_shutdown = False
-        self.__process_count = 0
         self.__spawner: ThreadPoolExecutor | None = None
 
     # --- plain properties -------------------------------------------------
@@ -114,9 +118,11 @@ class LaunchContext:
             self.__spawner = None
 
     def _allocate_process_number(self) -> int:
-        """Next N of the `name-N` process names: counts every process of this launch."""
-        self.__process_count += 1
-        return self.__process_count
+        """Next N of the `name-N` process names.  As in Jazzy, one count for the whole
+        Python process: a second LaunchService in it (launch_pytest, launch_testing)
+        goes on from where the first stopped (a-1, b-2, then a-3, b-4)."""
+        with _PROCESS_NUMBERS_LOCK:
+            return next(_PROCESS_NUMBERS)
 
     # --- locals and globals -----------------------------------------------
     @property

@@ -108,3 +108,25 @@ def test_from_another_thread_shutdown_returns_none_and_shuts_down():
     probe = Probe()
     assert probe.run_with(stop_from_a_thread) == (0, [None])
     assert probe.handled == ['shutdown']
+
+
+def test_process_numbers_go_on_across_launch_services_of_one_python_process():
+    """As Jazzy (observed: a-1, b-2 in a first LaunchService, then a-3, b-4 in a second
+    one, c-5 in a third): the N of `name-N` counts every process this Python process
+    launched, so two launches of a launch_pytest session never share a process name."""
+    names = []
+
+    def run(*launched: str) -> None:
+        service = LaunchService()
+        service.include_launch_description(LaunchDescription([
+            ExecuteProcess(cmd=['true'], name=name) for name in launched] + [
+            RegisterEventHandler(OnProcessStart(
+                on_start=lambda event, _: names.append(event.action.process_details['name'])))]))
+        assert service.run() == 0
+
+    run('a', 'b')
+    run('a', 'b')
+    numbers = {name: int(name.rsplit('-', 1)[1]) for name in names}
+    first = min(numbers.values())
+    assert sorted(numbers.values()) == [first, first + 1, first + 2, first + 3], names
+    assert {name.rsplit('-', 1)[0] for name in names if numbers[name] >= first + 2} == {'a', 'b'}
