@@ -56,9 +56,8 @@ class LaunchResult:
 
     @property
     def names(self) -> list[str]:
-        """Process names, sorted by their number N (processes start concurrently)."""
-        return sorted((p['name'] for p in self.processes),
-                      key=lambda name: int(name.rsplit('-', 1)[1]))
+        """Process names, in the order they started (ProcessStarted events)."""
+        return [p['name'] for p in self.processes]
 
     def process(self, name: str) -> dict[str, Any]:
         """The (first) started process called `name`."""

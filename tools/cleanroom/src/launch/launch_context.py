@@ -18,7 +18,7 @@ from .logging import get_logger
 _PROCESS_NUMBERS = itertools.count(1)
 _PROCESS_NUMBERS_LOCK = threading.Lock()
 
-_SPAWNER_THREADS = 4
+_SPAWNER_THREADS = 1
 
 
 class _Locals:
@@ -100,11 +100,14 @@ class LaunchContext:
             self.__wakeup.set()
 
     def _run_in_spawner(self, function: Callable[[], Any]) -> asyncio.Future:
-        """Run `function` (a process start) on one of the launch's spawner threads.
+        """Run `function` (a process start) on the launch's spawner thread.
 
-        Starting processes from a few threads lets their fork/exec overlap; the
-        threads live until the LaunchService ends because a child's death
-        signal (PR_SET_PDEATHSIG) fires when the thread that started it ends.
+        One thread: processes start one after the other in the order the launch
+        reaches them, so their ProcessStarted events, "process started" lines and
+        launch_testing's proc_info come in that order, as in Jazzy (several
+        threads overlapped the fork/execs, a few ms each, and shuffled the
+        order).  The thread lives until the LaunchService ends because a child's
+        death signal (PR_SET_PDEATHSIG) fires when the thread that started it ends.
         """
         assert self.__loop is not None, 'processes can only be started by a running launch'
         if self.__spawner is None:

@@ -25,6 +25,19 @@ def test_names_count_every_process_of_the_launch(run_launch):
     assert result.names == ['true-1', 'true-2', 'custom-3', 'dyn_x-4']
 
 
+def test_processes_start_in_the_order_the_launch_reaches_them(run_launch):
+    """As Jazzy: ProcessStarted events and "process started" lines come in the order
+    of the description (launch_testing's proc_info lists the processes so)."""
+    names = [f'p{index}' for index in range(8)]
+    result = run_launch([ExecuteProcess(cmd=['sleep', '30'], name=name) for name in names],
+                        shutdown_after=1.0)
+    expected = [f'{name}-{number}' for number, name in enumerate(names, start=1)]
+    assert result.names == expected
+    started = [line.split('[')[2].split(']')[0] for line in result.output.splitlines()
+               if 'process started with pid' in line]
+    assert started == expected, result.output
+
+
 def test_command_line_is_expanded_per_argument(run_launch, tmp_path):
     result = run_launch([
         SetLaunchConfiguration('word', 'two words'),
