@@ -201,7 +201,13 @@ def run_direct(count: int, executable: str) -> dict[str, float]:
     marks['ready'] = time.monotonic()
     for proc in procs:
         proc.send_signal(signal.SIGINT)
-    codes = [proc.wait(timeout=60) for proc in procs]
+    try:
+        codes = [proc.wait(timeout=60) for proc in procs]
+    finally:  # a talker that hangs at shutdown must not outlive the benchmark
+        for proc in procs:
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
     marks['shutdown'] = time.monotonic()
     for proc in procs:
         proc.stderr.close()
