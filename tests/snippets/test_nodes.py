@@ -11,6 +11,8 @@ from pathlib import Path
 import pytest
 import rclpy
 from rclpy.context import Context
+from speccheck.graph import read_parameters
+from speccheck.ros_error import RosError
 from textbook import workspace
 
 from .._polling import poll
@@ -80,6 +82,25 @@ def _wait_for_node(graph, name: str, proc: subprocess.Popen) -> bool:
                 stop=lambda: proc.poll() is not None)
 
 
+def _answers(name: str) -> bool:
+    """Whether node `name` answers on its parameter service, i.e. it spins.
+
+    On the graph is not yet up: a node is listed once it exists, before its
+    constructor has finished and it spins.  A Ctrl+C in that window stops it with
+    rclpy's RCLError ("the given context is not valid"), as it does Jazzy's demo
+    nodes, which are written the same way; this test is about a running node.
+    """
+    try:
+        read_parameters(name, timeout=1.0)
+    except RosError:
+        return False
+    return True
+
+
+def _wait_until_spinning(name: str, proc: subprocess.Popen) -> bool:
+    return poll(lambda: _answers(name), STARTUP_LIMIT, stop=lambda: proc.poll() is not None)
+
+
 def test_there_are_executables():
     assert EXECUTABLES, 'no executables installed from snippets/'
 
@@ -99,8 +120,10 @@ def test_node_starts_and_stops_cleanly(package, exe, ros_env, graph):
     node = NodeProcess(ros_env, package, exe, '-r', f'__node:={probe}',
                        *REQUIRED_ARGUMENTS.get((package, exe), ()))
     appeared = _wait_for_node(graph, probe, node.proc)
+    spinning = appeared and _wait_until_spinning(f'/{probe}', node.proc)
     code = node.stop()
     assert appeared, f'{package}/{exe} never appeared on the ROS graph:\n{node.output}'
+    assert spinning, f'{package}/{exe} never answered on its parameter service:\n{node.output}'
     assert code == 0, f'{package}/{exe} exited with {code} on SIGINT:\n{node.output}'
     assert 'Traceback' not in node.output, node.output
 
