@@ -275,6 +275,12 @@ def main(args=None) -> int:
         rclpy.spin(node)
     except (KeyboardInterrupt, ExternalShutdownException):
         pass  # Ctrl+C or a launch shutting us down: a normal way to stop.
+    except Exception:
+        if rclpy.ok():
+            raise  # a real error
+        # Ctrl+C came while a timer callback was publishing: rclpy had already shut
+        # its context down, so the publish failed (RCLError). Jazzy's turtlesim stops
+        # cleanly on Ctrl+C, at any moment; so does this one.
     finally:
         if node is not None:
             node.destroy_node()
