@@ -16,7 +16,6 @@ from .logging import get_logger
 
 #: The N of `name-N`, counted across every launch of this Python process.
 _PROCESS_NUMBERS = itertools.count(1)
-_PROCESS_NUMBERS_LOCK = threading.Lock()
 
 _SPAWNER_THREADS = 1
 
@@ -124,8 +123,7 @@ class LaunchContext:
         """Next N of the `name-N` process names.  As in Jazzy, one count for the whole
         Python process: a second LaunchService in it (launch_pytest, launch_testing)
         goes on from where the first stopped (a-1, b-2, then a-3, b-4)."""
-        with _PROCESS_NUMBERS_LOCK:
-            return next(_PROCESS_NUMBERS)
+        return next(_PROCESS_NUMBERS)  # one C call: no lock needed
 
     # --- locals and globals -----------------------------------------------
     @property
