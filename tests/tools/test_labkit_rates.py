@@ -4,6 +4,7 @@ best effort lose fragments, so `ros2 topic hz` subscribes reliably when it can).
 from __future__ import annotations
 
 import threading
+import time
 from collections.abc import Iterator
 
 import pytest
@@ -14,6 +15,7 @@ from rclpy.context import Context
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.qos import QoSProfile, ReliabilityPolicy
 from rclpy.serialization import serialize_message
+from speccheck import rates
 from std_msgs.msg import String
 
 from tests._polling import wait_for
@@ -75,6 +77,25 @@ def test_rate_and_size_of_a_topic(reliable_talker):
     assert RATE / 3 <= rate.hz <= RATE * 1.2, rate
     assert rate.size == len(serialize_message(reliable_talker.message)), rate
     assert rate.bytes_per_second == pytest.approx(rate.hz * rate.size)
+
+
+def test_a_measuring_process_that_falls_behind_still_times_the_publisher(
+        reliable_talker, monkeypatch):
+    """Each message is timed by when it was published: an observer that takes one
+    message per SLOW seconds (a loaded machine) still measures the talker's rate,
+    which it could never measure by timing the messages as it takes them."""
+    slow = 0.25  # seconds per message taken: at most 4 Hz timed on arrival
+    taken = rates._arrived
+
+    def slow_arrival(seen, raw, info) -> None:  # rclpy passes the info to two parameters
+        time.sleep(slow)
+        taken(seen, raw, info)
+
+    monkeypatch.setattr(rates, '_arrived', slow_arrival)
+    rate = measure_rates({'/rates_reliable': 'std_msgs/msg/String'}, window=WINDOW)[
+        '/rates_reliable']
+    assert rate.count >= 2 and RATE / 3 <= rate.hz <= RATE * 1.2, rate
+    assert rate.hz > 1.5 / slow, rate
 
 
 def test_subscription_matches_the_publishers_reliability(reliable_talker, best_effort_talker):
