@@ -85,6 +85,17 @@ CASES = [
                  '/cmd_vel': (('/robot_controller',), ())},
          nodes={'/robot1/sensor_publisher': {}, '/robot1/data_processor': {},
                 '/robot_controller': {}}),
+    # SetParameter ends with its group too: use_sim_time inside, the default outside; the
+    # nodes on simulated time subscribe to /clock, which nobody publishes here.
+    Case('my_robot_pkg', 'group_set_parameter.launch.py', PIPELINE,
+         topics={'/robot1/distance': (('/robot1/sensor_publisher',), ('/robot1/data_processor',)),
+                 '/robot1/distance_filtered': (('/robot1/data_processor',), ()),
+                 '/distance_filtered': ((), ('/robot_controller',)),
+                 '/cmd_vel': (('/robot_controller',), ()),
+                 '/clock': ((), ('/robot1/sensor_publisher', '/robot1/data_processor'))},
+         nodes={'/robot1/sensor_publisher': {'use_sim_time': True},
+                '/robot1/data_processor': {'use_sim_time': True},
+                '/robot_controller': {'use_sim_time': False}}),
     # Mistake: the processor's rule names "distances"; it matches nothing and changes nothing.
     Case('my_robot_pkg', 'remap_matches_nothing.launch.py',
          ('data_processor', 'sensor_publisher', 'sensor_publisher'),
