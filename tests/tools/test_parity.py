@@ -3,7 +3,8 @@ from __future__ import annotations
 
 import nbformat
 from textbook import parity, paths
-from textbook.parity import LessonParity, compare, normalise, table
+from textbook.parity import table
+from textbook.parity_compare import LessonParity, compare, normalise
 
 
 def _notebook(*outputs: str) -> nbformat.NotebookNode:

@@ -1,8 +1,8 @@
 """The box at the top of a lesson page, made from its ``textbook:`` metadata.
 
 A student sees before reading what the lesson teaches, how long it takes,
-its level, the hardware it needs (and how to follow it on a laptop) and
-which lessons come first, linked.
+its level, the hardware it needs (and how to follow it on a laptop), which
+lessons come first, linked, and what produced the outputs shown.
 """
 from __future__ import annotations
 
@@ -12,8 +12,10 @@ from typing import Any
 from .metadata import HARDWARE_TIERS
 
 
-def header_html(meta: dict[str, Any], prerequisites: list[tuple[str, str]]) -> str:
-    """The header box; ``prerequisites`` are (title, url) of the lessons to read first."""
+def header_html(meta: dict[str, Any], prerequisites: list[tuple[str, str]],
+                outputs: str = '') -> str:
+    """The header box; ``prerequisites`` are (title, url) of the lessons to read first,
+    ``outputs`` says what produced the page's outputs (`parity_record.provenance`)."""
     tier = meta['hardware_tier']
     facts = (f'<span class="textbook-fact"><strong>Duration</strong> '
              f'{meta["duration_minutes"]} min</span> '
@@ -34,4 +36,7 @@ def header_html(meta: dict[str, Any], prerequisites: list[tuple[str, str]]) -> s
             f'<p class="textbook-tier-1"><strong>On a laptop (tier 1):</strong> '
             f'{escape(meta["tier_1_path"].strip())}</p>'
             f'<p class="textbook-prerequisites"><strong>Before this lesson:</strong> '
-            f'{before}</p></div>')
+            f'{before}</p>'
+            + (f'<p class="textbook-outputs"><strong>Outputs on this page:</strong> '
+               f'{escape(outputs)}</p>' if outputs else '')
+            + '</div>')

@@ -6,7 +6,8 @@
   stale lessons (cached by content, two at a time) and add the executed
   notebooks to the site, with a generated page per chapter and per layer;
   mkdocs-jupyter renders the notebooks;
-- on_page_content: snippet title bars, folded solutions, header box, Key
+- on_page_content: snippet title bars, folded solutions, header box (with what
+  produced the outputs: parity_record.provenance), Key
   points box, glossary links and tabs (render.py), a TOC that keeps the code of
   headings (page_toc.py); an image without a description fails the build;
 - on_page_context: "edit this page" of a lesson opens its .md source.
@@ -20,6 +21,7 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
+import nbformat
 from bs4 import BeautifulSoup
 from mkdocs.exceptions import PluginError
 from mkdocs.plugins import event_priority
@@ -27,7 +29,7 @@ from mkdocs.structure.files import File, Files
 from mkdocs.structure.toc import get_toc
 from mkdocs.utils import get_relative_url
 
-from textbook import glossary, paths
+from textbook import glossary, parity_record, paths
 from textbook.execute import LessonExecutionError, publish_all
 from textbook.header import header_html
 from textbook.lessons import Lesson, load_all
@@ -41,13 +43,15 @@ log = logging.getLogger('mkdocs.hooks.textbook')
 GLOSSARY_PAGE = 'glossary.md'
 _lessons: list[Lesson] = []
 _glossary: list[glossary.Entry] = []
+_parity_record: dict[str, dict] = {}
 
 
 def on_config(config):
-    global _lessons, _glossary
+    global _lessons, _glossary, _parity_record
     try:
         _lessons = load_all()
         _glossary = glossary.load()
+        _parity_record = parity_record.load()
     except ValueError as error:
         raise PluginError(f'lesson check failed:\n{error}') from None
     config['nav'] = build_nav(_lessons, glossary=GLOSSARY_PAGE, reference=reference_pages())
@@ -97,8 +101,10 @@ def on_page_content(html: str, page, config, files) -> str:
     prerequisites = [(by_id[prereq].title, _url_from(page, files, by_id[prereq].site_path))
                      for prereq in lesson.meta['prerequisites']]
     try:
+        executed = nbformat.read(paths.NOTEBOOKS / lesson.site_path, as_version=4)
+        outputs = parity_record.provenance(lesson, executed, _parity_record)
         finished = finish_lesson_html(html, LessonPage(
-            header=header_html(lesson.meta, prerequisites), glossary=_glossary,
+            header=header_html(lesson.meta, prerequisites, outputs), glossary=_glossary,
             glossary_url=_url_from(page, files, GLOSSARY_PAGE)))
     except TabsError as error:
         raise PluginError(f'{lesson.source}: {error}') from None

@@ -6,203 +6,39 @@ command executes the lessons a second time with a real Jazzy sourced (by
 default the run-only reference in ../shared/jazzy-reference, installed into
 build/jazzy-reference) in an environment of its own (build/jazzy/venv, its
 products in build/jazzy), and compares the code cells' outputs after
-normalising only what varies from run to run (see `normalise`).
+normalising only what varies from run to run (`parity_compare.normalise`).
 
 Both sides use the lesson cache, so a lesson whose code cells, snippets and
 tools did not change is not executed again.  The report goes to
 build/parity/report.json and a table to stdout; the exit code is 1 when a
 lesson failed on either stack or a cell differs outside the allow-list
-(tools/textbook/parity_allowed.yaml, each entry with its reason).
+(tools/textbook/parity_allowed.yaml, each entry with its reason).  Each
+lesson that held is written to the committed parity record
+(tools/textbook/parity_record.yaml, see `parity_record`), each that did not
+is taken out of it; `--stale` compares only the lessons the record no
+longer covers, which is how CI runs it.
 """
 from __future__ import annotations
 
 import argparse
-import difflib
 import json
 import os
-import re
 import subprocess
 import sys
-from collections.abc import Iterable, Mapping, Sequence
-from dataclasses import asdict, dataclass, field
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict
 from pathlib import Path
 
 import nbformat
-import yaml
 
-from . import paths
+from . import parity_record, paths
+from .lessons import Lesson, load_all
+from .parity_compare import JAZZY_BUILD, LessonParity, compare, load_allowed
 
-JAZZY_BUILD = paths.ROOT / 'build' / 'jazzy'
 JAZZY_VENV = JAZZY_BUILD / 'venv'
 REFERENCE_INSTALLER = paths.ROOT.parent / 'shared' / 'jazzy-reference' / 'install.sh'
 REFERENCE_PREFIX = paths.ROOT / 'build' / 'jazzy-reference'
 REPORT = paths.ROOT / 'build' / 'parity' / 'report.json'
-ALLOWED = Path(__file__).with_name('parity_allowed.yaml')
-
-
-# -- normalising ----------------------------------------------------------------
-#: (pattern, replacement): what differs between two runs of the same lesson on
-#: one machine, whatever the stack.  Nothing else is touched.
-_VARYING = [
-    (re.compile(r'\bpid \[\d+\]'), 'pid [PID]'),
-    (re.compile(r'\bpid \d+'), 'pid PID'),
-    (re.compile(r'0x[0-9a-f]{6,}'), '0x…'),
-    (re.compile(r'\d{4}-\d\d-\d\d-\d\d-\d\d-\d\d-\d+-[\w.-]+?-\d+'), 'LOG-DIR'),
-    (re.compile(r'\[\d{9,}\.\d+\]'), '[TIME]'),
-    (re.compile(r'launch_params_\w+'), 'launch_params_…'),
-    # a file of tempfile.mkstemp(prefix='robot_controller_params_', suffix='.yaml')
-    (re.compile(r'(?<=_params_)[a-z0-9_]{8}(?=\.yaml\b)'), '…'),
-    (re.compile(r'ROS_DOMAIN_ID=\d+'), 'ROS_DOMAIN_ID=…'),
-    # colcon's durations: `[3.04s]`, `[2min 55s]`, a log line's `[0.797s]`
-    (re.compile(r'\[(\d+min )?\d+(\.\d+)?s\]'), '[…s]'),
-    (re.compile(re.escape(str(paths.RUNS)) + r'/[\w.-]+'), '~/ros2_ws'),
-    (re.compile(r'\bprocess ID \d+'), 'process ID PID'),
-    # a folder of tempfile.mkdtemp(prefix=...): /tmp/ex64_qe1ov5gk
-    (re.compile(r'(/tmp/(?:tmp|[\w-]+_))[a-z0-9_]{8}\b'), r'\1…'),
-    (re.compile(r"\bdomain ID of '\d+'"), "domain ID of '…'"),
-    # launch.log's lines start with the time in seconds
-    (re.compile(r'^\d{9,}\.\d+ ', re.M), ''),
-    # a node's log file: ~/.ros/log/<executable>_<pid>_<milliseconds>.log
-    (re.compile(r'_\d+_\d{13}\.log\b'), '_PID_TIME.log'),
-    # how long tests took: unittest's `Ran 3 tests in 1.198s`, pytest's last line
-    # `1 passed, 2 deselected in 2.51s` (with or without its `=` rule)
-    (re.compile(r'^(Ran \d+ tests? in )\d+\.\d+s$', re.M), r'\1…s'),
-    (re.compile(r'^(=* ?\d+ (?:passed|failed|error|errors|skipped|deselected)\b.* in )'
-                r'\d+\.\d+s(?: \(\d+:\d\d:\d\d\))?( ?=*)$', re.M), r'\1…s\2'),
-    # the launch process's own node carries its pid: `/launch_ros_11575`
-    (re.compile(r'\blaunch_ros_\d+'), 'launch_ros_PID'),
-    # ros2cli's hidden node carries the pid of the command: `_ros2cli_20479`
-    (re.compile(r'\b_ros2cli_\d+'), '_ros2cli_PID'),
-    # an endpoint's GID is made up when the endpoint is created
-    (re.compile(r'\bGID: [0-9a-f.]+'), 'GID: …'),
-]
-#: What differs between two installs of ROS 2 Jazzy, not between the stacks' behaviour:
-#: where the Python that runs Python nodes lives (`/usr/bin/python3` on Ubuntu, a venv
-#: or pyenv here), and so where its packages are (a traceback's file names).
-_INSTALL = [
-    (re.compile(r'(?<![\w/.~])~?/[\w./-]*/bin/python3?(?:\.\d+)?(?=\s|$)', re.M), 'python3'),
-    (re.compile(r'(?<![\w/.~])~?/[\w./-]*/lib/python3\.\d+/site-packages/'), 'site-packages/'),
-    # the log file of a Python node is named after the interpreter (python, python3.12)
-    (re.compile(r'\bpython3?(?:\.\d+)?(?=_PID_TIME\.log)'), 'python3'),
-]
-#: A line of a launched process (`[talker-1] ...`, group 2) or launch's line about
-#: it (`[INFO] [talker-1]: process started with pid [...]`, group 1).
-_PROCESS_LINE = re.compile(r'^(?:\[(?:DEBUG|INFO|WARN|WARNING|ERROR|FATAL)\] \[([\w.-]+-\d+)\]:'
-                           r'|\[([\w.-]+-\d+)\] )')
-#: A line an event handler's LogInfo printed, e.g. on a process's output or exit.
-_HANDLER_LINE = re.compile(r'^\[(?:INFO|WARNING|ERROR)\] \[launch\.user\]: ')
-
-
-def normalise(text: str, builds: Iterable[Path] = ()) -> list[str]:
-    """The lines of `text` with run-to-run variation replaced by placeholders.
-
-    `builds` are build folders that stand for each other (build/jazzy and
-    build).  A run of consecutive lines about launched processes is put in
-    an order launch itself defines: process by process (by name), launch's
-    own lines about the process (started, finished, died) in their order,
-    then what the process printed, in its order; the lines of event
-    handlers (`launch.user`) last, sorted.  Launch starts the processes of
-    one description at once, reads their output while it watches them exit,
-    and runs handlers as events come: how these interleave is up to the
-    operating system, on either stack.
-    """
-    for build in builds:
-        text = text.replace(str(build), str(paths.ROOT / 'build'))
-        text = text.replace(paths.shown(str(build)),
-                            paths.shown(str(paths.ROOT / 'build')))
-    for pattern, replacement in (*_VARYING, *_INSTALL):
-        text = pattern.sub(replacement, text)
-    out: list[str] = []
-    run: list[tuple[str, int, int | str, str]] = []
-    for index, line in enumerate([*text.splitlines(), None]):
-        process = _PROCESS_LINE.match(line) if line is not None else None
-        if process:
-            about, printed = process.groups()
-            run.append((about or printed, 0 if about else 1, index, line))
-            continue
-        if line is not None and _HANDLER_LINE.match(line):
-            run.append(('\uffff', 0, line, line))  # after every process, by text
-            continue
-        out += [item[-1] for item in sorted(run, key=lambda item: item[:3])]
-        run = []
-        if line is not None:
-            out.append(line)
-    return out
-
-
-def cell_text(cell: nbformat.NotebookNode) -> str:
-    """What a reader sees of a code cell's outputs, as text."""
-    parts = []
-    for output in cell.get('outputs', []):
-        if output.output_type == 'stream':
-            parts.append(output.text)
-        elif output.output_type in ('execute_result', 'display_data'):
-            parts.append(output.get('data', {}).get('text/plain', ''))
-        elif output.output_type == 'error':
-            parts.append(f'{output.ename}: {output.evalue}')
-    return '\n'.join(part.rstrip('\n') for part in parts)
-
-
-# -- comparing -------------------------------------------------------------------
-@dataclass
-class CellDifference:
-    cell: int
-    source: str
-    diff: list[str]
-    allowed: str | None = None
-
-
-@dataclass
-class LessonParity:
-    lesson: str
-    source: str
-    cells: int = 0
-    errors: dict[str, str] = field(default_factory=dict)  # stack -> why it did not execute
-    differences: list[CellDifference] = field(default_factory=list)
-
-    @property
-    def differing(self) -> list[CellDifference]:
-        return [d for d in self.differences if d.allowed is None]
-
-    @property
-    def held(self) -> bool:
-        return not self.errors and not self.differing
-
-
-def load_allowed(path: Path = ALLOWED) -> list[dict]:
-    entries = yaml.safe_load(path.read_text()) if path.exists() else None
-    for entry in entries or []:
-        if not {'lesson', 'cell_contains', 'reason'} <= set(entry):
-            raise ValueError(f'{paths.rel(path)}: every entry needs lesson, cell_contains and '
-                             f'reason: {entry}')
-    return entries or []
-
-
-def compare(lesson_id: str, source: str, cleanroom: nbformat.NotebookNode,
-            jazzy: nbformat.NotebookNode, allowed: Sequence[dict] = ()) -> LessonParity:
-    """Cell by cell: the normalised outputs of the same code cell on both stacks."""
-    result = LessonParity(lesson_id, source)
-    ours = [c for c in cleanroom.cells if c.cell_type == 'code']
-    theirs = [c for c in jazzy.cells if c.cell_type == 'code']
-    result.cells = len(ours)
-    builds = [JAZZY_BUILD]
-    for index, (a, b) in enumerate(zip(ours, theirs, strict=True)):
-        left, right = normalise(cell_text(a), builds), normalise(cell_text(b), builds)
-        entries = [entry for entry in allowed
-                   if entry['lesson'] in (lesson_id, '*') and entry['cell_contains'] in a.source]
-        for entry in entries:
-            if 'lines' in entry:  # only these lines may differ; the rest is compared
-                left, right = _without(left, entry['lines']), _without(right, entry['lines'])
-        if left == right:
-            continue
-        diff = list(difflib.unified_diff(left, right, 'clean room', 'Jazzy', lineterm='', n=1))
-        reason = next((entry['reason'] for entry in entries if 'lines' not in entry), None)
-        result.differences.append(CellDifference(index, a.source, diff, reason))
-    return result
-
-
-def _without(lines: list[str], pattern: str) -> list[str]:
-    return [line for line in lines if not re.search(pattern, line)]
 
 
 # -- executing -------------------------------------------------------------------
@@ -275,32 +111,63 @@ def _collect(process: subprocess.Popen, stack: str) -> dict[str, dict]:
 
 
 # -- the command -------------------------------------------------------------------
-def run(lesson_paths: Sequence[str], jazzy_setup: str | None) -> list[LessonParity]:
-    from .lessons import load_all
+Result = tuple[Lesson, LessonParity, 'nbformat.NotebookNode | None']
 
+
+def run(lesson_paths: Sequence[str], jazzy_setup: str | None, stale: bool = False
+        ) -> tuple[list[Result], str]:
+    """Each lesson (all, or `lesson_paths`) compared on both stacks, with its
+    clean-room notebook (None where it did not execute), and the versions of
+    the Jazzy compared with (:func:`reference_versions`).  With `stale`, the
+    clean room runs first and only the lessons the record no longer covers
+    run on Jazzy (none: Jazzy is not even set up)."""
     lessons = load_all()
     if lesson_paths:
         wanted = {Path(p).resolve() for p in lesson_paths}
         lessons = [lesson for lesson in lessons if lesson.path.resolve() in wanted]
     sources = [lesson.source for lesson in lessons]
-    env = jazzy_environment(reference_setup(jazzy_setup))
-    # Both stacks at once, one lesson each: the two cores the build's `jobs` uses.
-    jazzy = _run_side(str(JAZZY_VENV / 'bin' / 'python'), env, sources)
-    ours = _run_side(sys.executable, None, sources)
-    results = {'clean room': _collect(ours, 'the clean room'), 'Jazzy': _collect(jazzy, 'Jazzy')}
+    if stale:
+        ours = _collect(_run_side(sys.executable, None, sources), 'the clean room')
+        record = parity_record.load()
+        lessons = [lesson for lesson in lessons if 'error' in ours[lesson.source]
+                   or not parity_record.status(lesson, _notebook(ours[lesson.source]),
+                                               record).held]
+        if not lessons:
+            return [], ''
+        env = jazzy_environment(reference_setup(jazzy_setup))
+        theirs = _collect(_run_side(str(JAZZY_VENV / 'bin' / 'python'), env,
+                                    [lesson.source for lesson in lessons]), 'Jazzy')
+    else:
+        env = jazzy_environment(reference_setup(jazzy_setup))
+        # Both stacks at once, one lesson each: the two cores the build's `jobs` uses.
+        jazzy = _run_side(str(JAZZY_VENV / 'bin' / 'python'), env, sources)
+        ours = _collect(_run_side(sys.executable, None, sources), 'the clean room')
+        theirs = _collect(jazzy, 'Jazzy')
     allowed = load_allowed()
-    report = []
+    results = []
     for lesson in lessons:
-        sides = {stack: results[stack][lesson.source] for stack in results}
+        sides = {'clean room': ours[lesson.source], 'Jazzy': theirs[lesson.source]}
         errors = {stack: side['error'] for stack, side in sides.items() if 'error' in side}
         if errors:
-            parity = LessonParity(lesson.meta['id'], lesson.source, errors=errors)
+            parity = LessonParity(lesson.id, lesson.source, errors=errors)
         else:
-            notebooks = [nbformat.read(sides[stack]['notebook'], as_version=4)
-                         for stack in ('clean room', 'Jazzy')]
-            parity = compare(lesson.meta['id'], lesson.source, *notebooks, allowed=allowed)
-        report.append(parity)
-    return report
+            parity = compare(lesson.id, lesson.source, _notebook(sides['clean room']),
+                             _notebook(sides['Jazzy']), allowed=allowed)
+        results.append((lesson, parity, None if 'error' in sides['clean room']
+                        else _notebook(sides['clean room'])))
+    return results, reference_versions(env)
+
+
+def _notebook(side: dict) -> nbformat.NotebookNode:
+    return nbformat.read(side['notebook'], as_version=4)
+
+
+def reference_versions(env: Mapping[str, str]) -> str:
+    """The versions of the Jazzy `env` runs: what a record entry was compared with."""
+    script = ('import importlib.metadata as m; print(", ".join(f"{n} {m.version(n)}" '
+              'for n in ("launch", "launch_ros", "ros2cli", "rclpy")))')
+    return subprocess.run([str(JAZZY_VENV / 'bin' / 'python'), '-c', script], env=env,
+                          capture_output=True, text=True, check=True).stdout.strip()
 
 
 def table(report: Sequence[LessonParity]) -> str:
@@ -334,16 +201,23 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument('lessons', nargs='*', help='lesson files (default: every lesson)')
     parser.add_argument('--jazzy', metavar='SETUP_BASH',
                         help='setup.bash of a real ROS 2 Jazzy (default: the shared reference)')
+    parser.add_argument('--stale', action='store_true',
+                        help='only the lessons the parity record no longer covers (their code, '
+                             'snippets or clean-room outputs changed since parity held)')
     parser.add_argument('--execute-here', action='store_true', help=argparse.SUPPRESS)
     options = parser.parse_args(argv)
     if options.execute_here:
         print(json.dumps(execute_here(options.lessons)))
         return 0
-    report = run(options.lessons, options.jazzy)
+    results, reference = run(options.lessons, options.jazzy, stale=options.stale)
+    report = [parity for _, parity, _ in results]
     REPORT.parent.mkdir(parents=True, exist_ok=True)
     REPORT.write_text(json.dumps([{**asdict(p), 'held': p.held} for p in report], indent=1))
+    if results:
+        parity_record.update(results, reference)
     print(details(report))
-    print(table(report))
+    print(table(report) if report else
+          f'parity: every lesson asked for is in {paths.rel(parity_record.RECORD)} as it is now')
     return 0 if all(parity.held for parity in report) else 1
 
 
