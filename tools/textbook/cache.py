@@ -78,6 +78,12 @@ def snippet_dependencies(lesson: Lesson, root: Path | None = None) -> list[Path]
     root = root or paths.SNIPPETS
     if re.search(r'\bcolcon\s+build\b', lesson.text):
         return [root]
+    return named_snippets(lesson, root)
+
+
+def named_snippets(lesson: Lesson, root: Path | None = None) -> list[Path]:
+    """Every package of snippets/ the lesson names, and every file it includes."""
+    root = root or paths.SNIPPETS
     packages = [p for p in sorted(root.iterdir()) if p.is_dir()
                 and re.search(rf'\b{re.escape(p.name)}\b', lesson.text)]
     return packages + [s.path for s in lesson.snippets]

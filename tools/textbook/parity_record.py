@@ -22,7 +22,7 @@ import nbformat
 import yaml
 
 from . import paths
-from .cache import code_text, snippet_dependencies
+from .cache import code_text, named_snippets
 from .fingerprint import hash_paths, hash_text
 from .lessons import Lesson
 from .parity_compare import LessonParity, allowances, compared_lines, load_allowed
@@ -37,9 +37,13 @@ _HEADER = """\
 
 
 def inputs_hash(lesson: Lesson) -> str:
-    """What the lesson executes, whatever runs it: code cells and snippets."""
+    """What the lesson executes, whatever runs it: its code cells and the snippets
+    it names.  (Not all of snippets/, as the cache takes for a lesson that builds
+    the workspace: a package the lesson never names changes its outputs at most,
+    and the outputs hash sees that; one snippet edit must not send every lesson
+    back to Jazzy.)"""
     return hash_text(code_text(lesson),
-                     hash_paths(snippet_dependencies(lesson), base=paths.SNIPPETS.parent))
+                     hash_paths(named_snippets(lesson), base=paths.SNIPPETS.parent))
 
 
 def outputs_hash(lesson: Lesson, notebook: nbformat.NotebookNode,
