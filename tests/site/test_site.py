@@ -2,10 +2,13 @@
 from __future__ import annotations
 
 import html
+from pathlib import Path
 
 import nbformat
 import pytest
 from bs4 import BeautifulSoup
+from textbook.handout import handout_name
+from textbook.lessons import load_all
 
 # One worker builds the site once for all site tests; lessons the lesson tests
 # executed come from the cache, the others the build executes itself.
@@ -45,3 +48,22 @@ def test_navigation_is_chapter_layer_lesson(site):
                   'Set up and check your environment', 'Glossary',
                   'Spec files: the system you meant to build'):
         assert label in text
+
+
+@pytest.mark.timeout(1800)
+def test_every_lesson_page_offers_a_handout_without_solutions(site):
+    """Beside the executed notebook, the same without its solution cells (to hand out),
+    and the page says what produced its outputs."""
+    for lesson in load_all():
+        folder = site / lesson.site_path.removesuffix('.ipynb')
+        page = BeautifulSoup((folder / 'index.html').read_text(), 'html.parser')
+        name = handout_name(Path(lesson.site_path).name)
+        link = page.select_one('a[title="Download the notebook without solutions (to hand out)"]')
+        assert link is not None and link['href'].endswith(name), lesson.source
+        executed = nbformat.read(folder / Path(lesson.site_path).name, as_version=4)
+        handout = nbformat.read(folder / name, as_version=4)
+        tagged = [cell for cell in executed.cells if 'solution' in cell.metadata.get('tags', [])]
+        assert len(handout.cells) == len(executed.cells) - len(tagged), lesson.source
+        assert not any('solution' in cell.metadata.get('tags', []) for cell in handout.cells)
+        outputs = page.select_one('.textbook-outputs')
+        assert outputs is not None and 'executed on' in outputs.get_text(), lesson.source

@@ -4,7 +4,8 @@
   navigation (chapter -> layer -> lesson) from metadata;
 - on_files (before mkdocs-jupyter): build the snippets workspace, execute
   stale lessons (cached by content, two at a time) and add the executed
-  notebooks to the site, with a generated page per chapter and per layer;
+  notebooks to the site, each with its handout without solutions
+  (handout.py), with a generated page per chapter and per layer;
   mkdocs-jupyter renders the notebooks;
 - on_page_content: snippet title bars, folded solutions, header box (with what
   produced the outputs: parity_record.provenance), Key
@@ -31,6 +32,7 @@ from mkdocs.utils import get_relative_url
 
 from textbook import glossary, parity_record, paths
 from textbook.execute import LessonExecutionError, publish_all
+from textbook.handout import handout_name, without_solutions
 from textbook.header import header_html
 from textbook.lessons import Lesson, load_all
 from textbook.nav import build_nav, part_pages
@@ -80,9 +82,19 @@ def on_files(files: Files, config) -> Files:
         files.append(File(lesson.site_path, src_dir=str(paths.NOTEBOOKS),
                           dest_dir=config['site_dir'],
                           use_directory_urls=config['use_directory_urls']))
+        files.append(_handout_file(lesson, published[lesson.source], config))
     for site_path, markdown in part_pages(_lessons).items():
         files.append(File.generated(config, site_path, content=markdown))
     return files
+
+
+def _handout_file(lesson: Lesson, executed: Path, config) -> File:
+    """The lesson's notebook without solutions, beside the executed notebook that
+    mkdocs-jupyter puts in the page's folder (the theme links both)."""
+    stem = Path(lesson.site_path).stem
+    handout = without_solutions(nbformat.read(executed, as_version=4))
+    site_path = f'{Path(lesson.site_path).with_suffix("").as_posix()}/{handout_name(stem)}'
+    return File.generated(config, site_path, content=nbformat.writes(handout))
 
 
 def _lesson_of(page) -> Lesson | None:
