@@ -93,7 +93,8 @@ def _csv(data: Any) -> str:
 def _is_sequence(value: Any) -> bool:
     if isinstance(value, (list, tuple, array.array)):
         return True
-    return type(value).__module__ == 'numpy' and hasattr(value, 'tolist')
+    # a numpy array, not one of its items (numpy scalars have tolist() too)
+    return type(value).__module__ == 'numpy' and getattr(value, 'ndim', 0) > 0
 
 
 def _plain_scalar(value: Any) -> Any:

@@ -1,8 +1,11 @@
 """`ros2 service ...` against a running node, in Jazzy's words (recorded from the reference)."""
 from __future__ import annotations
 
+import os
+import signal
 import subprocess
 import sys
+import time
 from pathlib import Path
 
 import pytest
@@ -43,6 +46,7 @@ options:
 
 Commands:
   call  Call a service
+  echo  Echo a service
   find  Output a list of available services of a given type
   info  Print information about a service
   list  Output a list of available services
@@ -152,5 +156,84 @@ def test_call_stdin_and_values_exclude_each_other(ros2):
 
 
 def test_help(ros2):
-    # Jazzy also lists `echo  Echo a service`, which the clean room does not have yet
     assert ros2('service', '-h').stdout == SERVICE_HELP
+
+
+#: `ros2 service echo` as Jazzy printed it for a server with introspection on (the stamp and
+#: the client's gid vary): the request as the server received it, then its response.
+ECHO_REQUEST = """\
+info:
+  event_type: REQUEST_RECEIVED
+  stamp:
+"""
+ECHO_REQUEST_TAIL = """\
+request:
+- data: true
+response: []
+---
+"""
+ECHO_RESPONSE_TAIL = """\
+request: []
+response:
+- success: true
+  message: set to True
+---
+"""
+NO_INTROSPECTION = ("No publishers on topic '/quiet_flag/_service_event'; is service "
+                    'introspection on the client or server enabled?\n')
+
+
+@pytest.fixture(scope='module')
+def introspection_server(cli_env):
+    server = Path(__file__).with_name('introspection_server.py')
+    proc = subprocess.Popen([sys.executable, str(server)], env=cli_env, stdout=subprocess.PIPE,
+                            stderr=subprocess.DEVNULL, text=True, start_new_session=True)
+    try:
+        assert proc.stdout.readline().startswith('ready')
+        yield proc
+    finally:
+        os.killpg(proc.pid, signal.SIGINT)
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+
+
+def _read_until(proc: subprocess.Popen, text: str, timeout: float = 20.0) -> str:
+    out = ''
+    deadline = time.monotonic() + timeout
+    while text not in out and time.monotonic() < deadline:
+        line = proc.stdout.readline()
+        if not line:
+            break
+        out += line
+    return out
+
+
+def test_echo_introspection_events(ros2_background, introspection_server):
+    echo = ros2_background('service', 'echo', '/set_flag')
+    out = _read_until(echo, ECHO_RESPONSE_TAIL)
+    events = out.split('---\n')
+    requests = [event for event in events if event.startswith(ECHO_REQUEST)]
+    assert requests and requests[0].endswith(ECHO_REQUEST_TAIL.removesuffix('---\n'))
+    assert '  event_type: RESPONSE_SENT\n' in out and out.endswith(ECHO_RESPONSE_TAIL)
+    assert 'No publishers' not in out
+    echo.send_signal(signal.SIGINT)
+    assert echo.wait(timeout=10) == 2  # ros2cli's exit code for Ctrl-C
+
+
+def test_echo_without_introspection(ros2_background, introspection_server):
+    echo = ros2_background('service', 'echo', '/quiet_flag')
+    assert _read_until(echo, NO_INTROSPECTION) == NO_INTROSPECTION
+    assert echo.poll() is None  # and it goes on waiting for events
+
+
+@pytest.mark.parametrize(('args', 'error'), [
+    (['/nosuch'], "Cannot find type for '/nosuch'"),
+    (['/x', 'std_srvs/srv/Nope'], "The service type 'std_srvs/srv/Nope' is invalid"),
+    (['/x', 'std_msgs/msg/String'], "The service type 'std_msgs/msg/String' is invalid"),
+])
+def test_echo_errors(ros2, args, error):
+    result = ros2('service', 'echo', *args)
+    assert (result.returncode, result.stdout, result.stderr) == (1, '', error + '\n')

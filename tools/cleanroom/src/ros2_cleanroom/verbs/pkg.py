@@ -1,8 +1,8 @@
-"""`ros2 pkg list|prefix|executables|xml`: the packages of the ament index.
+"""`ros2 pkg create|list|prefix|executables|xml`: the packages of the ament index.
 
 Packages are found through the ament index (AMENT_PREFIX_PATH); a package's
 executables are the executable files in `<prefix>/lib/<package>/`, as for
-`ros2 run`.  (`ros2 pkg create` is not provided.)
+`ros2 run`.  `create` lays out a new package (ros2_cleanroom.pkg_create).
 """
 from __future__ import annotations
 
@@ -10,11 +10,13 @@ import argparse
 import os
 import xml.etree.ElementTree as ElementTree
 
+from ros2_cleanroom.pkg_create import add_arguments, create_package
 from ros2_cleanroom.verb_args import add_verb, command_parser, fail, run
 
 
 def build_parser() -> argparse.ArgumentParser:
     parser, verbs = command_parser('pkg', 'Various package related sub-commands')
+    add_arguments(add_verb(verbs, 'create', 'Create a new ROS 2 package', create_package))
     executables = add_verb(verbs, 'executables', 'Output a list of package specific executables',
                            list_executables)
     executables.add_argument('package_name', nargs='?', help='The package name')

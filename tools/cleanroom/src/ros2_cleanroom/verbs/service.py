@@ -1,4 +1,5 @@
-"""`ros2 service list|type|find|info|call`: the services in the graph, and calling one."""
+"""`ros2 service list|type|find|info|call|echo`: the services in the graph, calling one and
+echoing its introspection events (ros2_cleanroom.service_echo)."""
 from __future__ import annotations
 
 import argparse
@@ -13,6 +14,8 @@ from rclpy.node import Node
 from ros2_cleanroom import cli_node
 from ros2_cleanroom.interfaces import import_interface
 from ros2_cleanroom.message_fields import set_message_fields
+from ros2_cleanroom.service_echo import add_arguments as add_echo_arguments
+from ros2_cleanroom.service_echo import echo_service
 from ros2_cleanroom.verb_args import add_verb, command_parser, fail, run
 
 _HIDDEN_HELP = 'Consider hidden services as well'
@@ -46,6 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
     call.add_argument('--stdin', action='store_true', help='Read values from standard input')
     call.add_argument('-r', '--rate', metavar='N', type=float,
                       help='Repeat the call at a specific rate in Hz')
+    add_echo_arguments(add_verb(verbs, 'echo', 'Echo a service', echo_service))
     find = add_verb(verbs, 'find', 'Output a list of available services of a given type',
                     find_services)
     find.add_argument('service_type', help="Name of the ROS service type to filter for (e.g. "
