@@ -3,12 +3,14 @@
 Snapshots are built directly (no ROS running); each figure is rendered with
 Agg and measured in display pixels: shapes must not overlap, labels must sit
 inside their shapes, arrows must run from shape to shape without crossing
-any label, and the figure must fit a notebook's width.
+any label, and the figure must fit a notebook's width.  Namespace boxes
+(and their labels) are kept apart from the shapes here and checked in
+test_graph_namespaces.py.
 """
 from __future__ import annotations
 
 import random
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 import pytest
@@ -169,6 +171,9 @@ class Rendered:
     shapes: dict[str, Patch]      # vertex name -> its ellipse or box
     labels: dict[str, Text]
     arrows: list[Annotation]
+    #: namespace -> its shaded boxes (one per band it is drawn in) and their labels
+    boxes: dict[str, list[Patch]] = field(default_factory=dict)
+    box_labels: dict[str, list[Text]] = field(default_factory=dict)
 
     def outline(self, name: str) -> Path:
         """The shape's outline in display pixels."""
@@ -179,10 +184,25 @@ class Rendered:
 def render(figure: Figure) -> Rendered:
     FigureCanvasAgg(figure)
     figure.canvas.draw()
-    texts = figure.axes[0].texts
-    labels = {t.get_text().split('\n')[0]: t for t in texts if t.get_text()}
+    axes = figure.axes[0]
+    texts = axes.texts
+    labels = {t.get_text().split('\n')[0]: t for t in texts
+              if t.get_text() and not _namespace_gid(t)}
+    boxes: dict[str, list[Patch]] = {}
+    box_labels: dict[str, list[Text]] = {}
+    for patch in axes.patches:
+        boxes.setdefault(_namespace_gid(patch), []).append(patch)
+    for text in texts:
+        if _namespace_gid(text):
+            box_labels.setdefault(_namespace_gid(text), []).append(text)
     return Rendered(figure, {name: t.get_bbox_patch() for name, t in labels.items()}, labels,
-                    [t for t in texts if isinstance(t, Annotation)])
+                    [t for t in texts if isinstance(t, Annotation)], boxes, box_labels)
+
+
+def _namespace_gid(artist) -> str:
+    """The namespace a box or box label is drawn for ('' for anything else)."""
+    gid = artist.get_gid() or ''
+    return gid.removeprefix('namespace ') if gid.startswith('namespace ') else ''
 
 
 @pytest.fixture(scope='module', params=list(CASES), ids=list(CASES))

@@ -6,18 +6,21 @@ as fit, stacked top to bottom, and dot lays each band out on its own.  An
 edge from one band to another leaves its band on the right (dot routes it to
 there around the shapes), runs down a lane on the right margin, left along
 the corridor above the band it enters and down the left margin, and enters
-that band from the left: it never runs through a band.
+that band from the left: it never runs through a band.  A group's box (a
+namespace) is drawn in each band that holds some of its members, around
+those: simpler than keeping a group in one band, and the wrapping edges
+still only run in the margins and corridors.
 """
 from __future__ import annotations
 
-from collections.abc import Mapping
-from dataclasses import dataclass
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 
 import networkx as nx
 from matplotlib.path import Path
 from matplotlib.transforms import Affine2D
 
-from labkit.graph_dot import Edge, Gaps, Layout, Point, Size, lay_out
+from labkit.graph_dot import Box, Edge, Gaps, Group, Layout, Point, Size, lay_out
 from labkit.graph_paths import joined, rounded
 
 STUB_SIZE = (0.01, 0.01)  # inches: the point where a wrapping edge leaves or enters a band
@@ -41,7 +44,8 @@ class Placement:
 
     `routes[(source, target)]` runs from the source's outline to the tip of
     the arrow at the target's outline.  `bands` counts the rows of ranks;
-    `direction` is 'TB' where the ranks run top to bottom instead.
+    `direction` is 'TB' where the ranks run top to bottom instead.  `boxes`
+    are the groups' boxes, one per group and band.
     """
 
     width: float
@@ -51,38 +55,44 @@ class Placement:
     bands: int = 1
     direction: str = 'LR'
     wrapping: int = 0  # edges running from one band to another
+    boxes: list[Box] = field(default_factory=list)
 
 
 def place(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
-          max_width: float | None = None, spacing: Spacing = Spacing()) -> Placement:
+          max_width: float | None = None, spacing: Spacing = Spacing(),
+          groups: Sequence[Group] = ()) -> Placement:
     """Lay `graph` out left to right for shapes ('ellipse', 'box') of the given
     (width, height) in inches, to fit `max_width` (unless a single rank is
     wider): wrapped into bands, or top to bottom when that fits and wrapping
-    would send more than two edges per band around the margins."""
-    whole = _stack(graph, sizes, shapes, [list(graph)], spacing)
+    would send more than two edges per band around the margins or cut a
+    group's box in two.  Each of `groups` is kept together in a box (one in
+    each band that holds its members)."""
+    whole = _stack(graph, sizes, shapes, [list(graph)], spacing, groups)
     if max_width is None or whole.width <= max_width:
         return whole
-    wrapped = _wrap(graph, sizes, shapes, max_width, spacing, whole)
-    downwards = _top_to_bottom(graph, sizes, shapes, spacing)
+    wrapped = _wrap(graph, sizes, shapes, max_width, spacing, whole, groups)
+    downwards = _top_to_bottom(graph, sizes, shapes, spacing, groups)
     if downwards.width <= max_width and (
-            wrapped.width > max_width or wrapped.wrapping > 2 * (wrapped.bands - 1)):
+            wrapped.width > max_width or wrapped.wrapping > 2 * (wrapped.bands - 1)
+            or len(wrapped.boxes) > len(downwards.boxes)):
         return downwards
     return wrapped
 
 
 def _top_to_bottom(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
-                   spacing: Spacing) -> Placement:
-    layout = lay_out(graph, sizes, shapes, spacing.gaps, direction='TB')
+                   spacing: Spacing, groups: Sequence[Group]) -> Placement:
+    layout = lay_out(graph, sizes, shapes, spacing.gaps, direction='TB', groups=groups)
     shift = Affine2D().translate(spacing.margin, spacing.margin)
     return Placement(layout.width + 2 * spacing.margin, layout.height + 2 * spacing.margin,
                      {vertex: tuple(shift.transform(centre))
                       for vertex, centre in layout.centres.items()},
                      {edge: path.transformed(shift) for edge, path in layout.routes.items()},
-                     direction='TB')
+                     direction='TB', boxes=[box.moved(shift) for box in layout.boxes])
 
 
 def _wrap(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
-          max_width: float, spacing: Spacing, whole: Placement) -> Placement:
+          max_width: float, spacing: Spacing, whole: Placement, groups: Sequence[Group],
+          ) -> Placement:
     """The narrowest of a few splits into bands; the first that fits."""
     ranks = _ranks(whole.centres, sizes)
     best, limit = whole, max_width - 2 * spacing.margin
@@ -90,7 +100,7 @@ def _wrap(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str
         bands = _split(ranks, limit, spacing.gaps.rank)
         if len(bands) == 1:
             break
-        wrapped = _stack(graph, sizes, shapes, bands, spacing)
+        wrapped = _stack(graph, sizes, shapes, bands, spacing, groups)
         if wrapped.width < best.width:
             best = wrapped
         if wrapped.width <= max_width:
@@ -153,7 +163,8 @@ def _stub(kind: str, edge: Edge) -> str:
 
 
 def _band_layouts(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
-                  bands: list[list[str]], wrapping: list[Edge], gaps: Gaps) -> list[Layout]:
+                  bands: list[list[str]], wrapping: list[Edge], gaps: Gaps,
+                  groups: Sequence[Group]) -> list[Layout]:
     """Each band laid out by dot, with a stub for every wrapping edge: the
     rightmost rank for those leaving, the leftmost for those entering."""
     band_of = {vertex: b for b, members in enumerate(bands) for vertex in members}
@@ -169,16 +180,17 @@ def _band_layouts(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[
         layouts.append(lay_out(band, {**sizes, **dict.fromkeys(stubs, STUB_SIZE)},
                                {**shapes, **dict.fromkeys(stubs, 'point')}, gaps,
                                first=[_stub('in', edge) for edge in entries],
-                               last=[_stub('out', edge) for edge in exits]))
+                               last=[_stub('out', edge) for edge in exits], groups=groups))
     return layouts
 
 
 def _stack(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
-           bands: list[list[str]], spacing: Spacing) -> Placement:
+           bands: list[list[str]], spacing: Spacing, groups: Sequence[Group] = (),
+           ) -> Placement:
     """The bands laid out and stacked top to bottom, wrapping edges in lanes."""
     band_of = {vertex: b for b, members in enumerate(bands) for vertex in members}
     wrapping = sorted(edge for edge in graph.edges if band_of[edge[0]] != band_of[edge[1]])
-    layouts = _band_layouts(graph, sizes, shapes, bands, wrapping, spacing.gaps)
+    layouts = _band_layouts(graph, sizes, shapes, bands, wrapping, spacing.gaps, groups)
     entering = [sum(1 for edge in wrapping if band_of[edge[1]] == b) for b in range(len(bands))]
     left = spacing.margin + (spacing.lane_margin + max(entering) * spacing.lane_gap
                              if wrapping else 0.0)
@@ -207,7 +219,10 @@ def _stack(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, st
     width = right + spacing.margin + (spacing.lane_margin + len(wrapping) * spacing.lane_gap
                                       if wrapping else 0.0)
     real = {vertex: centre for vertex, centre in centres.items() if vertex in graph}
-    return Placement(width, height, real, routes, len(bands), wrapping=len(wrapping))
+    boxes = [box.moved(shift) for layout, shift in zip(layouts, shifts, strict=True)
+             for box in layout.boxes]
+    return Placement(width, height, real, routes, len(bands), wrapping=len(wrapping),
+                     boxes=boxes)
 
 
 def _lanes(wrapping: list[Edge], centres: Mapping[str, Point], band_of: Mapping[str, int],

@@ -4,13 +4,16 @@
 does what a layered picture of data flow needs: ranks from left to right,
 feedback loops broken so only their way back points left, few crossings,
 and splines routed around every shape.  Shapes are given at their measured
-size, so nothing overlaps whatever the labels say.  The same graph and sizes
-always give the same picture.
+size, so nothing overlaps whatever the labels say.  Groups of vertices (the
+nodes of one namespace) become dot clusters: dot keeps each group together
+inside a box with room for its label and reports where the box is.  The
+same graph and sizes always give the same picture.
 """
 from __future__ import annotations
 
-from collections.abc import Callable, Collection, Mapping
-from dataclasses import dataclass
+import math
+from collections.abc import Callable, Collection, Mapping, Sequence
+from dataclasses import dataclass, field
 
 import networkx as nx
 import pygraphviz
@@ -23,6 +26,7 @@ Edge = tuple[str, str]
 
 POINTS_PER_INCH = 72.0
 DOT_ARROW_LENGTH = 10.0  # points, at arrowsize 1
+CLUSTER_MARGIN = 6.0  # points between a group's box and the shapes in it
 
 
 @dataclass(frozen=True)
@@ -37,36 +41,63 @@ class Gaps:
     arrow_head: float = 0.06
 
 
+@dataclass(frozen=True)
+class Group:
+    """Vertices dot keeps together in one box, with room at the box's top
+    left for a label of `label` (width, height) inches."""
+
+    name: str
+    members: frozenset[str]
+    label: Size
+
+
+@dataclass(frozen=True)
+class Box:
+    """Where a :class:`Group` (or the part of it in one band) was put:
+    left, bottom, right, top in inches, y up; its label's room is at the top left."""
+
+    name: str
+    bounds: tuple[float, float, float, float]
+
+    def moved(self, shift: Affine2D) -> Box:
+        left, bottom, right, top = self.bounds
+        (left, bottom), (right, top) = shift.transform([(left, bottom), (right, top)])
+        return Box(self.name, (float(left), float(bottom), float(right), float(top)))
+
+
 @dataclass
 class Layout:
     """Shape centres and edge paths in inches, y up, inside `width` x `height`.
 
     `routes[(tail, head)]` runs from the tail's outline to the tip of the
     arrow at the head's outline (to the head's centre for an edge whose
-    data says ``arrow=False``).
+    data says ``arrow=False``).  `boxes` are the groups' boxes.
     """
 
     width: float
     height: float
     centres: dict[str, Point]
     routes: dict[Edge, Path]
+    boxes: list[Box] = field(default_factory=list)
 
 
 def lay_out(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
             gaps: Gaps = Gaps(), first: Collection[str] = (), last: Collection[str] = (),
-            direction: str = 'LR') -> Layout:
+            direction: str = 'LR', groups: Sequence[Group] = ()) -> Layout:
     """Lay `graph` out for shapes (dot's 'ellipse', 'box', 'point') of the given
     (width, height) in inches; `first` / `last` vertices get the first / last
-    rank to themselves.  `direction` is dot's rankdir: 'LR' or 'TB'.
+    rank to themselves.  `direction` is dot's rankdir: 'LR' or 'TB'.  Each of
+    `groups` (disjoint) is kept together in a box.
 
-    Each connected part is laid out on its own and the parts are stacked in
-    the order of their names (top to bottom, or left to right for 'TB'), so
-    two robots' chains show in the order a reader expects.
+    Each connected part (a group counting as connected) is laid out on its
+    own and the parts are stacked in the order of their names (top to
+    bottom, or left to right for 'TB'), so two robots' chains show in the
+    order a reader expects.
     """
-    parts = sorted((sorted(part) for part in nx.weakly_connected_components(graph)),
-                   key=lambda part: part[0])
+    parts = sorted((sorted(part) for part in _parts(graph, groups)), key=lambda part: part[0])
     layouts = [_lay_out_part(nx.DiGraph(graph.subgraph(part)), sizes, shapes, gaps,
-                             set(first) & set(part), set(last) & set(part), direction)
+                             set(first) & set(part), set(last) & set(part), direction,
+                             _within(groups, part))
                for part in parts]
     if not layouts:
         return Layout(0.0, 0.0, {}, {})
@@ -91,13 +122,32 @@ def lay_out(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, s
                                 for vertex, centre in layout.centres.items()})
         stacked.routes.update({edge: path.transformed(shift)
                                for edge, path in layout.routes.items()})
+        stacked.boxes.extend(box.moved(shift) for box in layout.boxes)
     return stacked
+
+
+def _parts(graph: nx.DiGraph, groups: Sequence[Group]) -> list[set[str]]:
+    """The weakly connected parts of `graph`, where a group's members count as
+    joined: a group is never split over two parts (and so two boxes)."""
+    joined = nx.Graph(graph.to_undirected(as_view=True))
+    for group in groups:
+        members = sorted(group.members & set(graph))
+        joined.add_edges_from(zip(members, members[1:], strict=False))
+    return list(nx.connected_components(joined))
+
+
+def _within(groups: Sequence[Group], vertices: Collection[str]) -> list[Group]:
+    """The groups with only their members among `vertices`, empty ones left out."""
+    kept = [Group(group.name, group.members & set(vertices), group.label) for group in groups]
+    return [group for group in kept if group.members]
 
 
 def _lay_out_part(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],
                   gaps: Gaps, first: Collection[str], last: Collection[str], direction: str,
-                  ) -> Layout:
+                  groups: Sequence[Group]) -> Layout:
     drawing = _to_dot(graph, sizes, shapes, gaps, first, last, direction)
+    for index, group in enumerate(groups):
+        _add_cluster(drawing, index, group)
     drawing.layout(prog='dot')
     _, _, right, top = (float(value) for value in drawing.graph_attr['bb'].split(','))
 
@@ -108,7 +158,31 @@ def _lay_out_part(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[
                   {str(node): inches(*_point(node.attr['pos'])) for node in drawing.nodes()},
                   {(str(edge[0]), str(edge[1])): _spline(edge.attr['pos'], inches,
                                                          gaps.clearance)
-                   for edge in drawing.edges()})
+                   for edge in drawing.edges()},
+                  [Box(group.name, _bounds(drawing.get_subgraph(_cluster(index)), inches))
+                   for index, group in enumerate(groups)])
+
+
+def _cluster(index: int) -> str:
+    """dot lays out a subgraph as a box when its name starts with 'cluster'."""
+    return f'cluster_{index}'
+
+
+def _add_cluster(drawing: pygraphviz.AGraph, index: int, group: Group) -> None:
+    """`group` as a dot cluster whose label is an empty cell of the label's
+    size: dot reserves the room at the top left and the drawing writes the
+    label there with its own font."""
+    width, height = (max(1, math.ceil(side * POINTS_PER_INCH)) for side in group.label)
+    room = (f'<<table border="0" cellborder="0" cellpadding="0" cellspacing="0"><tr>'
+            f'<td fixedsize="true" width="{width}" height="{height}"></td></tr></table>>')
+    drawing.add_subgraph(sorted(group.members), name=_cluster(index), label=room,
+                         labeljust='l', labelloc='t', margin=CLUSTER_MARGIN)
+
+
+def _bounds(cluster: pygraphviz.AGraph, inches: Callable[[float, float], Point],
+            ) -> tuple[float, float, float, float]:
+    left, bottom, right, top = (float(value) for value in cluster.graph_attr['bb'].split(','))
+    return (*inches(left, bottom), *inches(right, top))
 
 
 def _to_dot(graph: nx.DiGraph, sizes: Mapping[str, Size], shapes: Mapping[str, str],

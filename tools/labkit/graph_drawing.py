@@ -7,6 +7,9 @@ never overlap and arrows never cross a label.  The figure stays within
 notebook width (:data:`MAX_WIDTH`): a wide graph first gets a smaller font,
 then wraps into bands and grows downwards (:mod:`labkit.graph_bands`; top to
 bottom instead when wrapping would send many edges around the margins).
+Each namespace that holds nodes is a labelled, shaded box around its nodes
+and topics (:mod:`labkit.graph_namespaces`), laid out by dot as a cluster,
+so two robots, each in its namespace, show as two boxes.
 The layout is deterministic, so an executed lesson shows the same picture on
 every build.
 
@@ -30,13 +33,15 @@ from typing import Any
 import matplotlib.pyplot as plt
 import networkx as nx
 from matplotlib.figure import Figure
-from matplotlib.patches import BoxStyle
+from matplotlib.font_manager import FontProperties
+from matplotlib.patches import BoxStyle, FancyBboxPatch
 from matplotlib.path import Path
 from matplotlib.text import Text
 from matplotlib.transforms import Affine2D
 
 from labkit.graph_bands import Placement, Spacing, place
-from labkit.graph_dot import Gaps
+from labkit.graph_dot import Box, Gaps, Group, Size
+from labkit.graph_namespaces import describe_groups, groups
 from labkit.graph_paths import FollowPath
 
 __all__ = ['DISPLAY_PX_PER_INCH', 'MAX_WIDTH', 'GraphFigure', 'describe', 'layers', 'layout',
@@ -124,6 +129,13 @@ ARROW_COLOR = '#4a5568'
 ARROW_SCALE = 11.0  # points; the head of '-|>' is 0.4 of it long and 0.2 of it wide
 SPACING = Spacing(gaps=Gaps(arrow_head=0.4 * ARROW_SCALE / 72))
 TEXT_COLOR = '#1a202c'
+#: A namespace's box: under everything else, lighter than the shapes in it.
+BOX_STYLE = dict(boxstyle='round,pad=0,rounding_size=0.08', facecolor='#f1f3f6',
+                 edgecolor='#a0aec0', linewidth=1.0, zorder=1)
+BOX_LABEL_COLOR = '#4a5568'
+BOX_LABEL_BACKGROUND = dict(boxstyle='square,pad=0.1', facecolor=BOX_STYLE['facecolor'],
+                            edgecolor='none')
+BOX_LABEL_INSET = 0.05  # inches from the box's top left corner to its label (< dot's margin)
 
 
 def to_networkx(snapshot: Any) -> nx.DiGraph:
@@ -157,14 +169,21 @@ def layout(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = Non
 
 
 def layout_plan(graph: nx.DiGraph, sizes: dict[str, tuple[float, float]] | None = None,
-                max_width: float | None = None) -> Placement:
-    """The full :class:`~labkit.graph_bands.Placement` (centres and arrow paths),
-    wrapped into bands to fit `max_width`."""
+                max_width: float | None = None, label_sizes: dict[str, Size] | None = None,
+                ) -> Placement:
+    """The full :class:`~labkit.graph_bands.Placement` (centres, arrow paths and
+    namespace boxes), wrapped into bands to fit `max_width`.  `label_sizes`
+    gives the room, in inches, of each namespace box's label (default: an
+    estimate from its length)."""
     if sizes is None:
         sizes = {vertex: (1.2, 0.35) for vertex in graph}
     shapes = {vertex: 'ellipse' if graph.nodes[vertex].get('kind') == 'node' else 'box'
               for vertex in graph}
-    return place(graph, sizes, shapes, max_width, SPACING)
+    label_sizes = label_sizes or {}
+    namespaces = [Group(space, frozenset(members),
+                        label_sizes.get(space, (0.08 * len(space) + 0.1, 0.17)))
+                  for space, members in groups(graph).items()]
+    return place(graph, sizes, shapes, max_width, SPACING, namespaces)
 
 
 def _label(vertex: str, graph: nx.DiGraph, show_types: bool) -> str:
@@ -186,15 +205,32 @@ def _measure(labels: dict[str, Text], figure: Figure, fontsize: float,
     return sizes
 
 
-def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure) -> Placement:
+def _measure_box_labels(graph: nx.DiGraph, figure: Figure, fontsize: float,
+                        ) -> dict[str, Size]:
+    """The room, in inches, each namespace's label needs at the top left of its box."""
+    renderer = figure.canvas.get_renderer()
+    font = FontProperties(size=fontsize)
+    sizes = {}
+    for space in groups(graph):
+        width, height, _ = renderer.get_text_width_height_descent(space, font, ismath=False)
+        # dot keeps its margin above and below the label's room, which is
+        # where the inset goes
+        sizes[space] = (width / figure.dpi + 2 * BOX_LABEL_INSET, height / figure.dpi)
+    return sizes
+
+
+def _fit(graph: nx.DiGraph, labels: dict[str, Text], figure: Figure,
+         ) -> tuple[Placement, float]:
     """The layout at the font size that fits with the fewest bands, left to
-    right if it can (the larger size on a tie); leaves the labels at that size."""
-    plans = [(layout_plan(graph, _measure(labels, figure, size), MAX_WIDTH), size)
+    right if it can (the larger size on a tie), and that size; leaves the
+    labels at it."""
+    plans = [(layout_plan(graph, _measure(labels, figure, size), MAX_WIDTH,
+                          _measure_box_labels(graph, figure, size)), size)
              for size in FONT_SIZES]
     plan, fontsize = min(plans, key=lambda entry: (
         entry[0].width > MAX_WIDTH, entry[0].bands, entry[0].direction != 'LR', -entry[1]))
     _measure(labels, figure, fontsize)
-    return plan
+    return plan, fontsize
 
 
 def describe(graph: nx.DiGraph) -> str:
@@ -207,7 +243,7 @@ def describe(graph: nx.DiGraph) -> str:
         publishers = ', '.join(sorted(graph.predecessors(topic))) or 'nobody'
         subscribers = ', '.join(sorted(graph.successors(topic))) or 'nobody'
         parts.append(f'Topic {topic} is published by {publishers} and read by {subscribers}.')
-    return ' '.join(parts)
+    return ' '.join(parts + [describe_groups(graph)]).rstrip()
 
 
 def default_caption(graph: nx.DiGraph, title: str | None) -> str:
@@ -217,6 +253,8 @@ def default_caption(graph: nx.DiGraph, title: str | None) -> str:
     shown = (f"{nodes} node{'s' * (nodes != 1)} (ellipses) and "
              f"{topics} topic{'s' * (topics != 1)} (boxes); each arrow runs from a "
              f"publisher to its topic or from a topic to a subscriber")
+    if groups(graph):
+        shown += '; each shaded box holds the nodes and topics of one namespace'
     return f'The ROS graph, {title}: {shown}.' if title else f'The ROS graph: {shown}.'
 
 
@@ -256,7 +294,7 @@ def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None
                           bbox=NODE_STYLE if graph.nodes[vertex]['kind'] == 'node'
                           else TOPIC_STYLE)
         for vertex in sorted(graph)}
-    plan = _fit(graph, labels, figure)
+    plan, fontsize = _fit(graph, labels, figure)
     width, height = plan.width, plan.height
     if title:  # never cut the title off
         extent = axes.title.get_window_extent(figure.canvas.get_renderer())
@@ -267,6 +305,8 @@ def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None
     axes.set_ylim(0, height)
     for vertex, label in labels.items():
         label.set_position(plan.centres[vertex])
+    for box in plan.boxes:
+        _draw_box(axes, box, fontsize)
     for source, target in sorted(graph.edges):
         # Arrows are drawn after the labels (higher zorder): each label has
         # placed its shape by then, and the arrow is cut at that shape.
@@ -278,6 +318,19 @@ def _draw(figure: Figure, graph: nx.DiGraph, show_types: bool, title: str | None
                                                      axes.transData),
                           patchA=labels[source].get_bbox_patch(),
                           patchB=labels[target].get_bbox_patch()))
+
+
+def _draw_box(axes: Any, box: Box, fontsize: float) -> None:
+    """A namespace's shaded box, under the shapes and arrows, with its label
+    at the top left where dot left room for it.  An edge entering the box
+    from the side may still pass there (dot keeps only the box's own edges
+    off its label), so the label is drawn over the arrows, on the box's shade."""
+    left, bottom, right, top = box.bounds
+    axes.add_patch(FancyBboxPatch((left, bottom), right - left, top - bottom,
+                                  gid=f'namespace {box.name}', **BOX_STYLE))
+    axes.text(left + BOX_LABEL_INSET, top - BOX_LABEL_INSET, box.name, ha='left', va='top',
+              fontsize=fontsize, color=BOX_LABEL_COLOR, zorder=5, gid=f'namespace {box.name}',
+              bbox=BOX_LABEL_BACKGROUND)
 
 
 def _reserve_title_space(figure: Figure, axes: Any, width: float, height: float,
