@@ -10,10 +10,12 @@ import importlib
 import sys
 
 VERBS = {
+    'component': 'Various component related sub-commands',
     'daemon': 'Various daemon related sub-commands',
     'doctor': 'Check ROS setup and other potential issues',
     'interface': 'Show information about ROS interfaces',
     'launch': 'Run a launch file',
+    'multicast': 'Various multicast related sub-commands',
     'node': 'Various node related sub-commands',
     'param': 'Various param related sub-commands',
     'pkg': 'Various package related sub-commands',
