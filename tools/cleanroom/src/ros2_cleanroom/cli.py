@@ -10,11 +10,13 @@ import importlib
 import sys
 
 VERBS = {
+    'action': 'Various action related sub-commands',
     'component': 'Various component related sub-commands',
     'daemon': 'Various daemon related sub-commands',
     'doctor': 'Check ROS setup and other potential issues',
     'interface': 'Show information about ROS interfaces',
     'launch': 'Run a launch file',
+    'lifecycle': 'Various lifecycle related sub-commands',
     'multicast': 'Various multicast related sub-commands',
     'node': 'Various node related sub-commands',
     'param': 'Various param related sub-commands',
