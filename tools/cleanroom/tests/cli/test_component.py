@@ -2,7 +2,7 @@
 
 The headless stack has no C++ component container, so list/load/unload talk
 to a fake rclpy container (fake_container.py) through a stand-in for
-composition_interfaces (composition_stand_in.py); the reference answered the
+composition_interfaces (interface_stand_in.py); the reference answered the
 same commands against the same fake container.
 """
 from __future__ import annotations
@@ -12,8 +12,8 @@ import sys
 from pathlib import Path
 
 import pytest
-from composition_stand_in import environment
 from conftest import ROS2, stop_process
+from interface_stand_in import environment
 
 FAKE_CONTAINER = str(Path(__file__).with_name('fake_container.py'))
 

@@ -1,12 +1,13 @@
-"""Build the test stand-in for composition_interfaces once, and the environment to use it.
+"""Build a test stand-in for an interface package once, and the environment to use it.
 
-The PyPI wheels have no composition_interfaces, which `ros2 component
-list|load|unload` and the fake container need.  The stand-in
-(./composition_interfaces_stand_in, fields as Jazzy's) is built with colcon, as a
-student builds an interface package, into build/cache keyed by its content
-and the interpreter, so only the first run on a machine pays for it (~30 s).
-A file lock makes parallel test runs wait for one build.  On a real ROS 2,
-where composition_interfaces is installed, nothing is built.
+The PyPI wheels have no composition_interfaces (`ros2 component
+list|load|unload` and the fake container need it) and no package with an
+action (`ros2 action` needs one; turtlesim's RotateAbsolute, as on a real
+ROS 2).  Each stand-in (./<package>_stand_in, fields as Jazzy's) is built
+with colcon, as a student builds an interface package, into build/cache
+keyed by its content and the interpreter, so only the first run on a machine
+pays for it (~30 s).  A file lock makes parallel test runs wait for one
+build.  On a real ROS 2, where the package is installed, nothing is built.
 """
 from __future__ import annotations
 
@@ -19,47 +20,52 @@ import subprocess
 import sys
 from pathlib import Path
 
-SOURCE = Path(__file__).with_name('composition_interfaces_stand_in')
-CACHE = Path(__file__).resolve().parents[4] / 'build' / 'cache' / 'composition_interfaces'
+CACHE = Path(__file__).resolve().parents[4] / 'build' / 'cache' / 'interface_stand_ins'
 #: Built as ROS 2's packages are (NDEBUG): a bad field then raises TypeError when a
 #: request is sent, instead of failing a C assertion.
 CMAKE_ARGS = ['-DCMAKE_BUILD_TYPE=Release']
 
 
-def _content_hash() -> str:
+def _source(package: str) -> Path:
+    return Path(__file__).with_name(f'{package}_stand_in')
+
+
+def _content_hash(source: Path) -> str:
     digest = hashlib.sha256(' '.join([sys.prefix, *CMAKE_ARGS]).encode())
-    for path in sorted(SOURCE.rglob('*')):
+    for path in sorted(source.rglob('*')):
         if path.is_file():
-            digest.update(str(path.relative_to(SOURCE)).encode() + path.read_bytes())
+            digest.update(str(path.relative_to(source)).encode() + path.read_bytes())
     return digest.hexdigest()[:16]
 
 
-def _build(workspace: Path) -> None:
+def _build(source: Path, workspace: Path) -> None:
     shutil.rmtree(workspace, ignore_errors=True)
     workspace.mkdir(parents=True)
     env = dict(os.environ, PATH=f'{Path(sys.executable).parent}{os.pathsep}{os.environ["PATH"]}')
     result = subprocess.run(
         [str(Path(sys.executable).with_name('colcon')), '--log-base', str(workspace / 'log'),
-         'build', '--base-paths', str(SOURCE), '--build-base', str(workspace / 'build'),
+         'build', '--base-paths', str(source), '--build-base', str(workspace / 'build'),
          '--install-base', str(workspace / 'install'), '--cmake-args', *CMAKE_ARGS],
         cwd=workspace, env=env, capture_output=True, text=True, timeout=600)
     if result.returncode != 0:
-        raise RuntimeError(f'colcon build of the composition_interfaces stand-in failed:\n'
+        raise RuntimeError(f'colcon build of the stand-in {source.name} failed:\n'
                            f'{result.stdout[-3000:]}{result.stderr[-3000:]}')
     (workspace / 'done').touch()
 
 
-def environment(base: dict[str, str]) -> dict[str, str]:
-    """`base` plus what a sourced install of composition_interfaces sets."""
-    if importlib.util.find_spec('composition_interfaces') is not None:
+def environment(base: dict[str, str], package: str = 'composition_interfaces'
+                ) -> dict[str, str]:
+    """`base` plus what a sourced install of `package` sets."""
+    if importlib.util.find_spec(package) is not None:
         return dict(base)
     CACHE.mkdir(parents=True, exist_ok=True)
-    workspace = CACHE / _content_hash()
+    source = _source(package)
+    workspace = CACHE / f'{package}-{_content_hash(source)}'
     with open(CACHE / 'build.lock', 'w') as lock:
         fcntl.flock(lock, fcntl.LOCK_EX)
         if not (workspace / 'done').exists():
-            _build(workspace)
-    prefix = workspace / 'install' / 'composition_interfaces'
+            _build(source, workspace)
+    prefix = workspace / 'install' / package
     site = prefix / 'lib' / f'python{sys.version_info.major}.{sys.version_info.minor}' / \
         'site-packages'
 
