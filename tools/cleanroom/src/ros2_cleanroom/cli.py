@@ -6,6 +6,7 @@ Each verb lives in `ros2_cleanroom.verbs.<verb>` and provides
 """
 from __future__ import annotations
 
+import argparse
 import importlib
 import sys
 
@@ -30,23 +31,64 @@ VERBS = {
 ALIASES = {'wtf': 'doctor'}
 
 
+class CommandParser(argparse.ArgumentParser):
+    """`ros2 COMMAND -h` as ros2cli prints it: the sub-verbs sorted by name in one
+    aligned `Commands:` block, then the hint line."""
+
+    verbs: argparse.Action | None = None
+
+    def format_help(self) -> str:
+        head = super().format_help().split('\nCommands:\n')[0]
+        if self.verbs is None:
+            return head
+        entries = sorted((choice.dest, choice.help or '')
+                         for choice in self.verbs._choices_actions)  # type: ignore[attr-defined]
+        width = max((len(name) for name, _ in entries), default=0)
+        block = '\n'.join(f'  {name:<{width}}  {text}' for name, text in entries)
+        return (f'{head}\nCommands:\n{block}\n\n'
+                f'  Call `{self.prog} <command> -h` for more detailed usage.\n')
+
+
+#: ros2cli's words for its one top-level option.
+_BUFFERING_HELP = ('Do not force line buffering in stdout and instead use the python default '
+                   'buffering, which might be affected by PYTHONUNBUFFERED/-u and depends on '
+                   'whatever stdout is interactive or not')
+_BUFFERING = '--use-python-default-buffering'
+
+
+def _parser() -> argparse.ArgumentParser:
+    """The top-level parser, for its help and usage (argparse wraps them to the terminal)."""
+    parser = CommandParser(prog='ros2',
+                           description='ros2 is an extensible command-line tool for ROS 2.')
+    parser.add_argument(_BUFFERING, action='store_true', help=_BUFFERING_HELP)
+    commands = parser.add_subparsers(
+        title='Commands', metavar='Call `ros2 <command> -h` for more detailed usage.')
+    parser.verbs = commands
+    for name, text in sorted(VERBS.items()):
+        commands.add_parser(name, help=text, add_help=False)
+    return parser
+
+
 def usage() -> str:
-    lines = ['usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...', '',
-             'ros2 is an extensible command-line tool for ROS 2.', '',
-             'Commands:']
-    lines += [f'  {name:<9}  {text}' for name, text in sorted(VERBS.items())]
-    lines += ['', '  Call `ros2 <command> -h` for more detailed usage.']
-    return '\n'.join(lines)
+    """`ros2 -h`."""
+    return _parser().format_help().rstrip('\n')
+
+
+def usage_line() -> str:
+    """The `usage: ros2 ...` lines that start each of ros2cli's error messages."""
+    return _parser().format_usage().rstrip('\n')
 
 
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
+    while argv[:1] == [_BUFFERING]:  # accepted; output is line-buffered either way here
+        argv = argv[1:]
     if not argv or argv[0] in ('-h', '--help'):
         print(usage())
         return 0
     verb, rest = argv[0], argv[1:]
     if verb not in VERBS:
-        print(usage().splitlines()[0], file=sys.stderr)
+        print(usage_line(), file=sys.stderr)
         choices = ', '.join(f"'{v}'" for v in sorted(VERBS))
         print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
               f"invalid choice: '{verb}' (choose from {choices})", file=sys.stderr)

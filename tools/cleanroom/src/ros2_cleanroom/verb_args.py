@@ -10,32 +10,14 @@ import argparse
 import sys
 from collections.abc import Callable
 
-from ros2_cleanroom.cli import usage
+from ros2_cleanroom.cli import CommandParser, usage_line
 
 Handler = Callable[[argparse.Namespace], int]
 
 
-class _CommandParser(argparse.ArgumentParser):
-    """`ros2 COMMAND -h` as ros2cli prints it: the sub-verbs sorted by name in one
-    aligned `Commands:` block, then the hint line."""
-
-    verbs: argparse.Action | None = None
-
-    def format_help(self) -> str:
-        head = super().format_help().split('\nCommands:\n')[0]
-        if self.verbs is None:
-            return head
-        entries = sorted((choice.dest, choice.help or '')
-                         for choice in self.verbs._choices_actions)  # type: ignore[attr-defined]
-        width = max((len(name) for name, _ in entries), default=0)
-        block = '\n'.join(f'  {name:<{width}}  {text}' for name, text in entries)
-        return (f'{head}\nCommands:\n{block}\n\n'
-                f'  Call `{self.prog} <command> -h` for more detailed usage.\n')
-
-
 def command_parser(command: str, description: str) -> tuple[argparse.ArgumentParser, object]:
     """The parser for `ros2 COMMAND` and the sub-parser group for its verbs."""
-    parser = _CommandParser(prog='ros2 ' + command, description=description)
+    parser = CommandParser(prog='ros2 ' + command, description=description)
     verbs = parser.add_subparsers(
         title='Commands', metavar=f'Call `ros2 {command} <command> -h` for more detailed usage.')
     parser.verbs = verbs
@@ -85,7 +67,7 @@ def unrecognized_arguments(unknown: list[str]) -> int:
     ros2cli parses the whole command line with its top-level `ros2` parser,
     so it is that parser that reports them: its usage line, exit code 2.
     """
-    print(usage().splitlines()[0], file=sys.stderr)
+    print(usage_line(), file=sys.stderr)
     print(f"ros2: error: unrecognized arguments: {' '.join(unknown)}", file=sys.stderr)
     return 2
 

@@ -108,7 +108,8 @@ def test_unknown_option_is_rejected_by_ros2(ros2, launch_file):
     result = ros2('launch', '--bogus', launch_file(BASIC_NODES))
     assert (result.returncode, result.stdout) == (2, '')
     assert result.stderr.splitlines() == [
-        'usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...',
+        'usage: ros2 [-h] [--use-python-default-buffering]',
+        '            Call `ros2 <command> -h` for more detailed usage. ...',
         'ros2: error: unrecognized arguments: --bogus']
 
 

@@ -82,7 +82,8 @@ def test_unknown_option_is_reported_by_the_top_level_parser(ros2):
     result = ros2('node', 'list', '--bogus')
     assert (result.returncode, result.stdout) == (2, '')
     assert result.stderr.splitlines() == [
-        'usage: ros2 [-h] Call `ros2 <command> -h` for more detailed usage. ...',
+        'usage: ros2 [-h] [--use-python-default-buffering]',
+        '            Call `ros2 <command> -h` for more detailed usage. ...',
         'ros2: error: unrecognized arguments: --bogus']
 
 
