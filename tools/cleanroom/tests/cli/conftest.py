@@ -9,7 +9,6 @@ session and is stopped (SIGINT, then SIGKILL) when the module ends.
 from __future__ import annotations
 
 import os
-import signal
 import subprocess
 import sys
 from collections.abc import Callable, Iterator
@@ -18,6 +17,7 @@ from pathlib import Path
 import psutil
 import pytest
 from _polling import wait_for
+from cli_processes import stop_process
 from launch_testing.domain_isolation import lease_domain
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')
@@ -39,22 +39,6 @@ def cli_env(tmp_path_factory: pytest.TempPathFactory) -> Iterator[dict[str, str]
     finally:  # the daemon the module's first listing started, as a user would stop it
         subprocess.run([ROS2, 'daemon', 'stop'], env=env, capture_output=True, check=False)
         lease.release()
-
-
-def stop_process(proc: subprocess.Popen, grace: float = 5.0) -> None:
-    """SIGINT the process group, then SIGKILL whatever is left; always reap."""
-    for sig, wait in ((signal.SIGINT, grace), (signal.SIGKILL, grace)):
-        if proc.poll() is not None:
-            break
-        try:
-            os.killpg(proc.pid, sig)
-        except ProcessLookupError:
-            break
-        try:
-            proc.wait(timeout=wait)
-        except subprocess.TimeoutExpired:
-            continue
-    proc.wait()
 
 
 def _wait_for_the_daemon_listing(args: tuple[str, ...], expected: list[str],

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import fcntl
 import hashlib
-import importlib.util
 import os
 import shutil
 import subprocess
@@ -24,6 +23,13 @@ CACHE = Path(__file__).resolve().parents[4] / 'build' / 'cache' / 'interface_sta
 #: Built as ROS 2's packages are (NDEBUG): a bad field then raises TypeError when a
 #: request is sent, instead of failing a C assertion.
 CMAKE_ARGS = ['-DCMAKE_BUILD_TYPE=Release']
+
+
+def _importable(package: str, env: dict[str, str]) -> bool:
+    """Whether a process with `env` (not this one: the test run may have put another
+    workspace on its own path) imports `package`."""
+    return subprocess.run([sys.executable, '-c', f'import {package}'], env=env,
+                          capture_output=True, check=False).returncode == 0
 
 
 def _source(package: str) -> Path:
@@ -56,7 +62,7 @@ def _build(source: Path, workspace: Path) -> None:
 def environment(base: dict[str, str], package: str = 'composition_interfaces'
                 ) -> dict[str, str]:
     """`base` plus what a sourced install of `package` sets."""
-    if importlib.util.find_spec(package) is not None:
+    if _importable(package, base):
         return dict(base)
     CACHE.mkdir(parents=True, exist_ok=True)
     source = _source(package)

@@ -12,9 +12,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import ROS2, stop_process
+from cli_processes import stop_process
 from interface_stand_in import environment
 
+ROS2 = str(Path(sys.executable).with_name('ros2'))
 FAKE_CONTAINER = str(Path(__file__).with_name('fake_container.py'))
 
 LOAD_HELP_HEAD = """\
