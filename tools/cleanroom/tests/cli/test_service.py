@@ -184,12 +184,16 @@ NO_INTROSPECTION = ("No publishers on topic '/quiet_flag/_service_event'; is ser
 
 
 @pytest.fixture(scope='module')
-def introspection_server(cli_env):
+def introspection_server(cli_env, daemon_listing):
+    """The servers, up and listed by the module's daemon, which `service echo` asks for
+    their type (as Jazzy's does): on a loaded machine its own discovery may take longer
+    than its wait, and it ends with "Cannot find type" (seen in CI)."""
     server = Path(__file__).with_name('introspection_server.py')
     proc = subprocess.Popen([sys.executable, str(server)], env=cli_env, stdout=subprocess.PIPE,
                             stderr=subprocess.DEVNULL, text=True, start_new_session=True)
     try:
         assert proc.stdout.readline().startswith('ready')
+        daemon_listing(('service', 'list'), ['/quiet_flag', '/set_flag'])
         yield proc
     finally:
         os.killpg(proc.pid, signal.SIGINT)
