@@ -13,6 +13,7 @@ import importlib
 from collections.abc import Callable
 from typing import Any
 
+import yaml
 from rosidl_parser.definition import AbstractNestedType, NamespacedType
 
 TIME_TYPE = 'builtin_interfaces.msg.Time'
@@ -75,3 +76,13 @@ def _message_value(current: Any, value: Any, now: Callable[[], Any] | None) -> A
 def _import(namespaced: NamespacedType) -> type:
     module = importlib.import_module('.'.join(namespaced.namespaces))
     return getattr(module, namespaced.name)
+
+
+def fill_from_yaml(msg: Any, text: str) -> None:
+    """Set `msg`'s fields from the YAML mapping `text`, as `service call` and
+    `action send_goal` take their request or goal; raises what each reports."""
+    values = yaml.safe_load(text)
+    if not isinstance(values, dict):
+        raise TypeError(f"Value '{values}' is expected to be a dictionary but is a "
+                        f'{type(values).__name__}')
+    set_message_fields(msg, values)

@@ -4,13 +4,11 @@ from __future__ import annotations
 import argparse
 import sys
 
-import yaml
-
 from ros2_cleanroom import cli_node
 from ros2_cleanroom.action_goal import send_goal
 from ros2_cleanroom.action_graph import action_endpoints, action_names_and_types
 from ros2_cleanroom.interfaces import import_interface
-from ros2_cleanroom.message_fields import set_message_fields
+from ros2_cleanroom.message_fields import fill_from_yaml
 from ros2_cleanroom.verb_args import add_verb, command_parser, fail, run
 
 _NAME_HELP = "Name of the ROS action to get info (e.g. '/fibonacci')"
@@ -101,12 +99,8 @@ def action_send_goal(args: argparse.Namespace) -> int:
     text = sys.stdin.read() if args.stdin else args.goal
     goal = action_class.Goal()
     if text is not None:
-        values = yaml.safe_load(text)
         try:
-            if not isinstance(values, dict):
-                raise TypeError(f"Value '{values}' is expected to be a dictionary but is a "
-                                f'{type(values).__name__}')
-            set_message_fields(goal, values)
+            fill_from_yaml(goal, text)
         except Exception as error:  # noqa: BLE001 - reported as Jazzy does
             return fail(f'Failed to populate message fields: {error!r}')
     return send_goal(args.action_name, action_class, args.action_type, goal, args.feedback)

@@ -6,30 +6,19 @@ import argparse
 import sys
 import time
 
-import yaml
 from rclhelpers.names import is_hidden
 from rclpy.executors import SingleThreadedExecutor
 from rclpy.node import Node
 
 from ros2_cleanroom import cli_node
+from ros2_cleanroom.discovery_options import add_discovery_options
 from ros2_cleanroom.interfaces import import_interface
-from ros2_cleanroom.message_fields import set_message_fields
+from ros2_cleanroom.message_fields import fill_from_yaml
 from ros2_cleanroom.service_echo import add_arguments as add_echo_arguments
 from ros2_cleanroom.service_echo import echo_service
 from ros2_cleanroom.verb_args import add_verb, command_parser, fail, run
 
 _HIDDEN_HELP = 'Consider hidden services as well'
-
-
-def _add_discovery_options(parser: argparse.ArgumentParser) -> None:
-    """`--spin-time`, `-s` and `--no-daemon`, in ros2cli's order and words."""
-    parser.add_argument('--spin-time', type=float, default=None,
-                        help='Spin time in seconds to wait for discovery (only applies when '
-                             'not using an already running daemon)')
-    parser.add_argument('-s', '--use-sim-time', action='store_true',
-                        help='Enable ROS simulation time')
-    parser.add_argument('--no-daemon', action='store_true',
-                        help='Do not spawn nor use an already running daemon')
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -58,11 +47,11 @@ def build_parser() -> argparse.ArgumentParser:
                       help='Only display the number of services discovered')
     find.add_argument('--include-hidden-services', action='store_true', help=_HIDDEN_HELP)
     info = add_verb(verbs, 'info', 'Print information about a service', service_info)
-    _add_discovery_options(info)
+    add_discovery_options(info)
     info.add_argument('service_name',
                       help="Name of the ROS service to get info (e.g. '/add_two_ints')")
     listing = add_verb(verbs, 'list', 'Output a list of available services', list_services)
-    _add_discovery_options(listing)
+    add_discovery_options(listing)
     listing.add_argument('-t', '--show-types', action='store_true',
                          help='Additionally show the service type')
     listing.add_argument('-c', '--count-services', action='store_true',
@@ -166,12 +155,8 @@ def service_call(args: argparse.Namespace) -> int:
     text = sys.stdin.read() if args.stdin else args.values
     request = srv_type.Request()
     if text is not None:
-        values = yaml.safe_load(text)
         try:
-            if not isinstance(values, dict):
-                raise TypeError(f"Value '{values}' is expected to be a dictionary but is a "
-                                f'{type(values).__name__}')
-            set_message_fields(request, values)
+            fill_from_yaml(request, text)
         except Exception as error:  # noqa: BLE001 - reported as ros2cli does
             return fail(f'Failed to populate field: {error}')
     period = 1.0 / args.rate if args.rate else None
