@@ -1,4 +1,4 @@
-"""Grade a case in a process of its own, so that a hang inside DDS costs a retry, not the run.
+"""Grade a case in a process of its own, so that a hang inside DDS fails that case, not the run.
 
 Fast DDS 2.14 can deadlock a participant's own discovery threads while it
 processes endpoints that go away (eProsima/Fast-DDS#6502: the receive thread
@@ -8,11 +8,12 @@ A check's graph observer sees many launches stop, and once it is deadlocked,
 the check blocks in C, where no Python timeout reaches it: CI once hung there
 (a day-shift probe of 7.4, in rmw_create_client).  So each case is graded in
 a child process: a child that has not answered within HANG_GUARD seconds is
-killed (labkit's watchdog then stops its launches) and the case is graded once
-more.  A hang is never silent: before the kill, the stacks of every thread of
-the child (gdb, where installed: Fast DDS's own threads too) and its Python
-stacks (faulthandler) go to build/hangs/, and the test run ends with a warning
-naming the file, so each hang leaves the evidence its cause needs.
+killed (labkit's watchdog then stops its launches) and the case fails.  It is
+not graded again: a retry would hide the fault it is evidence of (no hang
+fired in the last CIs since tools/ddsfix).  Before the kill, the stacks of
+every thread of the child (gdb, where installed: Fast DDS's own threads too)
+and its Python stacks (faulthandler) go to build/hangs/, and the failure names
+the file, so each hang leaves the evidence its cause needs.
 """
 from __future__ import annotations
 
@@ -22,7 +23,6 @@ import signal
 import subprocess
 import sys
 import time
-import warnings
 from pathlib import Path
 
 import psutil
@@ -31,13 +31,8 @@ from textbook import paths
 
 #: Seconds; the slowest case takes about 230 s on a loaded 2-core CI worker.
 HANG_GUARD = 420.0
-ATTEMPTS = 2
 #: Where the stacks of a hung child are kept.
 HANGS = paths.BUILD / 'hangs'
-
-
-class GradingHang(UserWarning):
-    """A grading child hung and was killed; the warning names its stacks' file."""
 
 _CHILD = """
 import json, sys
@@ -53,24 +48,20 @@ print(json.dumps({'title': verdict.title, 'results': verdict.results}))
 def grade(exercise: str, workspace: Path, package: str, guard: float = HANG_GUARD,
           child: str = _CHILD) -> Verdict:
     """The verdict of `exercise` on `package`, graded in a child process (environment
-    and ROS domain of this one); raises AssertionError when every attempt hung."""
-    for attempt in range(1, ATTEMPTS + 1):
-        running = subprocess.Popen(
-            [sys.executable, '-X', 'faulthandler', '-c', child, exercise, str(workspace), package],
-            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-        try:
-            stdout, stderr = running.communicate(timeout=guard)
-        except subprocess.TimeoutExpired:
-            report = _hang_report(running)
-            print(f'grading attempt {attempt} of {exercise} hung for {guard:g} s and was '
-                  f'killed; its stacks are in {report}')
-            warnings.warn(GradingHang(f'grading {exercise} ({package}) hung for {guard:g} s '
-                                      f'(attempt {attempt}); stacks: {report}'), stacklevel=2)
-            continue
-        assert running.returncode == 0, f'grading {exercise} failed:\n{stdout}{stderr}'
-        answer = json.loads(stdout.strip().splitlines()[-1])
-        return Verdict(answer['title'], [(met, sentence) for met, sentence in answer['results']])
-    raise AssertionError(f'grading {exercise} hung {ATTEMPTS} times ({guard:g} s each)')
+    and ROS domain of this one); raises AssertionError, naming the stacks' file, when
+    the child hung."""
+    running = subprocess.Popen(
+        [sys.executable, '-X', 'faulthandler', '-c', child, exercise, str(workspace), package],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        stdout, stderr = running.communicate(timeout=guard)
+    except subprocess.TimeoutExpired:
+        report = _hang_report(running)
+        raise AssertionError(f'grading {exercise} ({package}) hung for {guard:g} s and was '
+                             f'killed; its stacks are in {report}') from None
+    assert running.returncode == 0, f'grading {exercise} failed:\n{stdout}{stderr}'
+    answer = json.loads(stdout.strip().splitlines()[-1])
+    return Verdict(answer['title'], [(met, sentence) for met, sentence in answer['results']])
 
 
 def _hang_report(running: subprocess.Popen) -> Path:

@@ -12,7 +12,7 @@ student's package per case (`ex_starter`, `ex_wrong_<n>`).
 A student's overlay on a sourced workspace works the same way, and
 `-k ex611` builds only what exercise 6.11 needs.
 Each check launches its case as a student's terminal would, from a process
-of its own that is graded again if it hangs inside DDS (_grading_process).  New exercises
+of its own, killed with its stacks kept if it hangs inside DDS (_grading_process).  New exercises
 and wrong answers are picked up from labkit.checks and
 `snippets/<solutions>/wrong/` without touching this file.
 """
