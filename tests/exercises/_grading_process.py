@@ -18,21 +18,18 @@ the file, so each hang leaves the evidence its cause needs.
 from __future__ import annotations
 
 import json
-import shutil
 import signal
 import subprocess
 import sys
-import time
 from pathlib import Path
 
 import psutil
 from labkit.grading.verdict import Verdict
-from textbook import paths
+
+from .._hang_evidence import native_stacks, tail, write_report
 
 #: Seconds; the slowest case takes about 230 s on a loaded 2-core CI worker.
 HANG_GUARD = 420.0
-#: Where the stacks of a hung child are kept.
-HANGS = paths.BUILD / 'hangs'
 
 _CHILD = """
 import json, sys
@@ -72,27 +69,15 @@ def _hang_report(running: subprocess.Popen) -> Path:
         processes = [f'{p.pid} {p.status()} {" ".join(p.cmdline())[:200]}' for p in family]
     except psutil.Error:
         processes = []
-    native = 'gdb is not installed'
-    if shutil.which('gdb'):
-        native = subprocess.run(['gdb', '-p', str(running.pid), '-batch', '-ex',
-                                 'thread apply all bt 40'], capture_output=True, text=True,
-                                timeout=120, check=False).stdout
+    native = native_stacks(running.pid)
     running.send_signal(signal.SIGABRT)  # faulthandler prints every thread's Python stack
     try:
         stdout, stderr = running.communicate(timeout=30)
     except subprocess.TimeoutExpired:
         running.kill()
         stdout, stderr = running.communicate()
-    HANGS.mkdir(parents=True, exist_ok=True)
-    report = HANGS / f'grading-{running.pid}-{time.strftime("%Y%m%d-%H%M%S")}.txt'
-    report.write_text('\n\n'.join([
-        '== processes (the child first)\n' + '\n'.join(processes),
-        '== output (end)\n' + _tail(stdout, 40),
-        '== standard error, with the Python stacks (end)\n' + _tail(stderr, 200),
-        '== native stacks of every thread (gdb)\n' + native]))
-    return report
-
-
-def _tail(output: str | bytes | None, lines: int = 15) -> str:
-    text = output.decode(errors='replace') if isinstance(output, bytes) else output or ''
-    return ''.join(line + '\n' for line in text.splitlines()[-lines:])
+    return write_report('grading', running.pid, {
+        'processes (the child first)': '\n'.join(processes),
+        'output (end)': tail(stdout, 40),
+        'standard error, with the Python stacks (end)': tail(stderr, 200),
+        'native stacks of every thread (gdb)': native})

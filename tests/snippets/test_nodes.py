@@ -15,6 +15,7 @@ from speccheck.graph import read_parameters
 from speccheck.ros_error import RosError
 from textbook import workspace
 
+from .._hang_evidence import native_stacks, tail, write_report
 from .._polling import poll
 
 STARTUP_LIMIT = 30.0  # seconds; a hang guard, not a speed requirement
@@ -28,9 +29,12 @@ class NodeProcess:
 
     def __init__(self, ros_env, package: str, exe: str, *ros_args: str):
         path = Path(workspace.INSTALL) / package / 'lib' / package / exe
-        self.proc = subprocess.Popen([str(path), '--ros-args', *ros_args], env=ros_env,
+        # faulthandler: a node that ignores Ctrl+C prints its Python stacks on SIGABRT
+        self.proc = subprocess.Popen([str(path), '--ros-args', *ros_args],
+                                     env={**ros_env, 'PYTHONFAULTHANDLER': '1'},
                                      stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                      text=True)
+        self.exe = exe
         self.lines: list[str] = []
         self._reader = threading.Thread(target=self._read, daemon=True)
         self._reader.start()
@@ -50,14 +54,25 @@ class NodeProcess:
         return condition(self.lines)
 
     def stop(self) -> int:
-        """Ctrl+C, then the exit code (fails the test if the node does not stop)."""
+        """Ctrl+C, then the exit code (fails the test if the node does not stop, naming
+        the file that keeps its native and Python stacks)."""
         self.proc.send_signal(signal.SIGINT)
         try:
             self.proc.wait(timeout=STARTUP_LIMIT)
         except subprocess.TimeoutExpired:
-            self.proc.kill()
-            self.proc.wait()
-            pytest.fail(f'did not stop on SIGINT:\n{self.output}')
+            native = native_stacks(self.proc.pid)
+            self.proc.send_signal(signal.SIGABRT)
+            try:
+                self.proc.wait(timeout=STARTUP_LIMIT)
+            except subprocess.TimeoutExpired:
+                self.proc.kill()
+                self.proc.wait()
+            self._reader.join(timeout=STARTUP_LIMIT)
+            report = write_report(f'node-{self.exe}', self.proc.pid, {
+                'output, with the Python stacks (end)': tail(self.output, 200),
+                'native stacks of every thread (gdb)': native})
+            pytest.fail(f'did not stop on SIGINT within {STARTUP_LIMIT:g} s; its stacks are '
+                        f'in {report}:\n{tail(self.output, 30)}')
         self._reader.join(timeout=STARTUP_LIMIT)
         return self.proc.returncode
 
