@@ -20,7 +20,8 @@ def get_launch_description_from_any_launch_file(
     `.py` files are tried as Python, then as a front end; anything else the
     other way round.  When both fail, a file of a known format gets one
     ' - Type: message' line per loader (Jazzy's "Caught multiple exceptions
-    ..." text); any other file 'the format is unknown'.
+    ..." text); any other file (also '.xml', whose name has no extension)
+    'the format is unknown', the failures kept on the error all the same.
     """
     def frontend(path: str) -> LaunchDescription:
         return get_launch_description_from_frontend_launch_file(path, parser=parser)
@@ -37,5 +38,7 @@ def get_launch_description_from_any_launch_file(
         except Exception as error:  # noqa: BLE001 - every failure is reported below
             errors.append(error)
     if extension != 'py' and not parser.is_filename_valid(launch_file_path):
-        raise InvalidLaunchFileError('')
+        extension = ''
+    if not extension:
+        raise InvalidLaunchFileError('', likely_errors=errors)
     raise InvalidLaunchFileError(extension, likely_errors=errors) from errors[0]
