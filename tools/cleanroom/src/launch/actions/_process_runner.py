@@ -193,12 +193,3 @@ class RunningProcess:
                 os.kill(self.pid, signum)
             except ProcessLookupError:
                 pass
-
-    def write_stdin(self, data: bytes) -> None:
-        """Write to the child's stdin (ignored once it is closed)."""
-        if self._popen is not None and self._popen.stdin is not None and self.running:
-            try:
-                self._popen.stdin.write(data)
-                self._popen.stdin.flush()
-            except (BrokenPipeError, ValueError):
-                pass

@@ -254,9 +254,8 @@ class ExecuteProcess(Action):
         for handler in (
                 _targeted_handler(self, ShutdownProcess, self.__on_shutdown_process),
                 _targeted_handler(self, SignalProcess, self.__on_signal_process),
-                _targeted_handler(self, ProcessStdin, self.__on_process_stdin),
-                OnProcessIO(target_action=self, on_stdout=self.__on_output_event,
-                            on_stderr=self.__on_output_event),
+                OnProcessIO(target_action=self, on_stdin=self.__on_process_stdin_event,
+                            on_stdout=self.__on_output_event, on_stderr=self.__on_output_event),
                 OnProcessExit(target_action=self, on_exit=self.__on_exit),
                 OnProcessExit(target_action=self, on_exit=self.__respawn_or_complete),
                 OnShutdown(on_shutdown=self.__on_shutdown)):
@@ -399,9 +398,11 @@ class ExecuteProcess(Action):
             return
         self.__signal(event.signal)
 
-    def __on_process_stdin(self, context: LaunchContext) -> None:
-        if self.__process is not None:
-            self.__process.write_stdin(context.locals.event.text)
+    def __on_process_stdin_event(self, event: ProcessStdin) -> None:
+        """Jazzy writes nothing to the process: it only warns, naming this handler."""
+        assert self.__logger is not None
+        self.__logger.warning(
+            f"in ExecuteProcess('{id(self)}').__on_process_stdin_event()")
 
     def __shutdown(self, context: LaunchContext, send_sigint: bool) -> None:
         if self.__shutdown_requested:

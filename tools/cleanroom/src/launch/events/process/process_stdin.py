@@ -1,19 +1,16 @@
-"""Write to the standard input of some processes."""
-from collections.abc import Callable
-
-from .process_targeted_event import ProcessTargetedEvent
+"""Input for a process: a ProcessIO event on its stdin (fd 0)."""
+from .process_io import ProcessIO
 
 
-class ProcessStdin(ProcessTargetedEvent):
-    """Write `text` (bytes or str) to the stdin of the matching processes."""
+class ProcessStdin(ProcessIO):
+    """`text` for the standard input of the process `action` names.
+
+    As on Jazzy, the fields are those of every running-process event (action,
+    name, cmd, cwd, env, pid), and the process's own handler does not write
+    the text: it logs a warning that names the handler.
+    """
 
     name = 'launch.events.process.ProcessStdin'
 
-    def __init__(self, *, text: object, process_matcher: Callable[[object], bool]) -> None:
-        super().__init__(process_matcher=process_matcher)
-        self.__text = text.encode() if isinstance(text, str) else text
-
-    @property
-    def text(self) -> bytes:
-        """The bytes to write."""
-        return self.__text
+    def __init__(self, *, text: bytes, **kwargs: object) -> None:
+        super().__init__(text=text, fd=0, **kwargs)
