@@ -41,8 +41,11 @@ class ROSAdapter:
         if self.__thread is not None:
             raise RuntimeError('ROSAdapter already started')
         self.__ros_context = rclpy.Context()
-        rclpy.init(args=self.__argv, context=self.__ros_context,
-                   signal_handler_options=SignalHandlerOptions.NO)
+        # Without argv, no arguments at all: rclpy would read sys.argv, and rcl would
+        # warn about the launch arguments ('Found remap rule 'foo:=bar'...'), which
+        # Jazzy's launch process never does.
+        rclpy.init(args=[] if self.__argv is None else self.__argv,
+                   context=self.__ros_context, signal_handler_options=SignalHandlerOptions.NO)
         self.__ros_node = rclpy.create_node(f'launch_ros_{os.getpid()}',
                                             context=self.__ros_context)
         self.__executor = SingleThreadedExecutor(context=self.__ros_context)
