@@ -91,6 +91,18 @@ def test_commands_run_with_their_folder_environment_and_handlers(ros_env):
     assert _count(lines, r'exited with code') == 2, run.output()
 
 
+def test_set_environment_variable_reaches_later_processes_and_ends_with_its_group(ros_env):
+    run = labkit.launch(PACKAGE, 'process_environment.launch.py', env=dict(
+        ros_env, ROBOT_NAME='alpha'), cwd=paths.WORKSPACE)
+    code = _wait_for_exit(run)
+    assert code == 0, run.output()
+    shown = sorted((line for line in run.lines if ' ROBOT_NAME=' in line),
+                   key=lambda line: int(line.split('-')[1].split(']')[0]))
+    # the terminal's value before the action, the group's inside it, the action's after
+    assert shown == ['[before-1] ROBOT_NAME=alpha', '[in_group-2] ROBOT_NAME=gamma',
+                     '[after_group-3] ROBOT_NAME=beta'], run.output()
+
+
 def test_without_a_shell_the_shell_syntax_is_printed_as_it_is(ros_env):
     run = _start('process_no_shell.launch.py', ros_env)
     code = _wait_for_exit(run)
@@ -217,7 +229,7 @@ def _graded_by_exercise_checks() -> set[tuple[str, str]]:
 
 
 TESTED = {(PACKAGE, name) for name in (
-    'process_commands.launch.py', 'process_no_shell.launch.py',
+    'process_commands.launch.py', 'process_environment.launch.py', 'process_no_shell.launch.py',
     'process_missing_executable.launch.py', 'events_timer.launch.py',
     'events_on_start.launch.py', 'events_critical.launch.py', 'events_respawn.launch.py',
     'process_stubborn.launch.py')}
