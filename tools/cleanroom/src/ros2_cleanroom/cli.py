@@ -93,8 +93,9 @@ def main(argv: list[str] | None = None) -> int:
         print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
               f"invalid choice: '{verb}' (choose from {choices})", file=sys.stderr)
         return 2
-    module = importlib.import_module('ros2_cleanroom.verbs.' + ALIASES.get(verb, verb))
-    return module.main(rest)
+    if verb in ALIASES:  # the alias's own name shows in its help and errors
+        return importlib.import_module('ros2_cleanroom.verbs.' + ALIASES[verb]).main(rest, verb)
+    return importlib.import_module('ros2_cleanroom.verbs.' + verb).main(rest)
 
 
 if __name__ == '__main__':

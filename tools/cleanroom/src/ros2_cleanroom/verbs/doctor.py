@@ -1,5 +1,9 @@
 """`ros2 doctor [--report]` (alias `ros2 wtf`): check the setup and the running graph.
 
+Its one sub-verb, `ros2 doctor hello`, checks the network between hosts
+(ros2_cleanroom.doctor_hello).  Called as `ros2 wtf`, the help and errors name
+`ros2 wtf` and its description is the alias's, as in Jazzy.
+
 The checks run in Jazzy's order (network, middleware, topic).  Their findings
 are Python UserWarnings printed as `<file>: <line>: UserWarning: <message>` on
 stderr, so `PYTHONWARNINGS=ignore` hides them as it does in Jazzy; errors
@@ -13,9 +17,10 @@ import sys
 import warnings
 from collections.abc import Callable
 
-from ros2_cleanroom import cli_node, doctor_graph, doctor_report
+from ros2_cleanroom import cli_node, doctor_graph, doctor_hello, doctor_report
+from ros2_cleanroom.cli import VERBS
 from ros2_cleanroom.doctor_graph import QosPair, TopicEndpoints
-from ros2_cleanroom.verb_args import run
+from ros2_cleanroom.verb_args import add_verb, command_parser, run
 
 #: The graph must have been unchanged this long (s) before the checks run.
 DOCTOR_QUIET_TIME = 1.0
@@ -48,18 +53,21 @@ CHECKS: list[tuple[str, Check]] = [
 ]
 
 
-def build_parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog='ros2 doctor',
-                                     description='Check ROS setup and other potential issues')
-    parser.add_argument('--report', '-r', action='store_true', help='Print all reports.')
-    parser.add_argument('--report-failed', '-rf', action='store_true',
+def build_parser(command: str = 'doctor') -> argparse.ArgumentParser:
+    """`ros2 doctor`, or `ros2 wtf` (the same options and sub-verb)."""
+    parser, verbs = command_parser(command, VERBS[command])
+    report = parser.add_mutually_exclusive_group()
+    report.add_argument('--report', '-r', action='store_true', help='Print all reports.')
+    report.add_argument('--report-failed', '-rf', action='store_true',
                         help='Print reports of failed checks only.')
+    parser.add_argument('--exclude-packages', '-ep', action='store_true',
+                        help='Exclude package checks or report.')
     parser.add_argument('--include-warnings', '-iw', action='store_true',
                         help='Include warnings as failed checks. Warnings are ignored by '
                              'default.')
-    parser.add_argument('--exclude-packages', '-ep', action='store_true',
-                        help='Exclude package checks or report.')
     parser.set_defaults(handler=doctor)
+    doctor_hello.add_arguments(
+        add_verb(verbs, 'hello', doctor_hello.HELP, doctor_hello.hello))
     return parser
 
 
@@ -109,5 +117,6 @@ def doctor(args: argparse.Namespace) -> int:
     return 0
 
 
-def main(argv: list[str]) -> int:
-    return run(build_parser(), argv)
+def main(argv: list[str], command: str = 'doctor') -> int:
+    """`command` is the name it was called by: `doctor` or its alias `wtf`."""
+    return run(build_parser(command), argv)
