@@ -27,6 +27,14 @@ VERBS = {
     'topic': 'Various topic related sub-commands',
     'wtf': 'Use `wtf` as alias to `doctor`',
 }
+#: Commands Jazzy has but leaves out of `ros2 -h` (its invalid-choice list and
+#: `ros2 extensions` name them).
+HIDDEN_VERBS = {
+    'extension_points': 'List extension points',
+    'extensions': 'List extensions',
+}
+#: Every command `ros2` runs, shown or hidden.
+COMMANDS = {**VERBS, **HIDDEN_VERBS}
 #: Commands that run another command's module.
 ALIASES = {'wtf': 'doctor'}
 
@@ -64,8 +72,11 @@ def _parser() -> argparse.ArgumentParser:
     commands = parser.add_subparsers(
         title='Commands', metavar='Call `ros2 <command> -h` for more detailed usage.')
     parser.verbs = commands
-    for name, text in sorted(VERBS.items()):
-        commands.add_parser(name, help=text, add_help=False)
+    for name in sorted(COMMANDS):  # a parser without help has no line in the help
+        if name in VERBS:
+            commands.add_parser(name, help=VERBS[name], add_help=False)
+        else:
+            commands.add_parser(name, add_help=False)
     return parser
 
 
@@ -87,9 +98,9 @@ def main(argv: list[str] | None = None) -> int:
         print(usage())
         return 0
     verb, rest = argv[0], argv[1:]
-    if verb not in VERBS:
+    if verb not in COMMANDS:
         print(usage_line(), file=sys.stderr)
-        choices = ', '.join(f"'{v}'" for v in sorted(VERBS))
+        choices = ', '.join(f"'{v}'" for v in sorted(COMMANDS))
         print("ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: "
               f"invalid choice: '{verb}' (choose from {choices})", file=sys.stderr)
         return 2

@@ -1,5 +1,7 @@
 """`ros2` itself: its help lists every command of Jazzy's ros-base with ros2cli's one
-top-level option, which it accepts before a command (recorded from the reference)."""
+top-level option, which it accepts before a command (recorded from the reference).
+`extension_points` and `extensions` are hidden from the help, not from the list
+of choices an unknown command gets."""
 from __future__ import annotations
 
 TOP_HELP = """\
@@ -46,3 +48,18 @@ def test_the_buffering_option_comes_before_a_command(ros2):
     result = ros2('--use-python-default-buffering', 'daemon', '-h')
     assert (result.returncode, result.stdout.splitlines()[0]) == (0, 'usage: ros2 daemon [-h]'), \
         result.stderr
+
+
+UNKNOWN_COMMAND = """\
+usage: ros2 [-h] [--use-python-default-buffering]
+            Call `ros2 <command> -h` for more detailed usage. ...
+ros2: error: argument Call `ros2 <command> -h` for more detailed usage.: invalid choice: \
+'nosuchverb' (choose from 'action', 'component', 'daemon', 'doctor', 'extension_points', \
+'extensions', 'interface', 'launch', 'lifecycle', 'multicast', 'node', 'param', 'pkg', 'run', \
+'service', 'topic', 'wtf')
+"""
+
+
+def test_an_unknown_command_lists_the_hidden_ones_too(ros2):
+    result = ros2('nosuchverb', env={'COLUMNS': '80'})
+    assert (result.returncode, result.stdout, result.stderr) == (2, '', UNKNOWN_COMMAND)
