@@ -141,3 +141,19 @@ def test_the_night_shift_defect_not_started_is_not_caught(package, monkeypatch):
         f'was not judged on {ch07_04.DEFECT_SHOWN}' in problem
     assert [target[:2] for target in speccheck.targets] == \
         [['--launch', 'capstone_bringup'], ['--timeout', str(spec_run.SLOW_START)]]
+
+
+def test_a_run_that_fails_without_a_finding_is_quoted_not_left_empty(package, monkeypatch):
+    """CI once graded 7.1.1 with "`speccheck live ...` reported:" and nothing after it:
+    speccheck had ended non-zero without a FAILED line.  Its exit code and last lines
+    are the report then."""
+    crash = (1, 'speccheck live: x against s\n')
+    speccheck = Speccheck({CAPSTONE_3: [crash], CAPSTONE_2: [timed_out('/turtle3/controller')],
+                           OTHER_CONFIG: [found(VALUE)]})
+    verdict = grade(package, speccheck, monkeypatch)
+    [problem] = verdict.problems
+    assert problem.endswith('reported:\n      (exit code 1, no finding; its last lines:)\n'
+                            '      speccheck live: x against s'), problem
+    assert SpecRun('s', -9, '', 'Traceback (most recent call last):\nKeyError: 1\n') \
+        .shown_findings(2) == ('(exit code -9, no finding; its last lines:)\n'
+                               '      Traceback (most recent call last):\n      KeyError: 1')

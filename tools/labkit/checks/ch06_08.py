@@ -44,7 +44,7 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage, mode: str) -> 
     check = 'static check' if mode == 'static' else 'running check'
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
-    findings = '\n      '.join(run.failed[:6])
+    findings = run.shown_findings(6)
     extra = any('not in the spec' in line for line in run.failed)
     if extra and any('no Node action starts it' in line for line in run.failed):
         why = ('your spec names nodes the system does not have and leaves out those it has: '

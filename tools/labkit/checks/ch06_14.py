@@ -84,7 +84,7 @@ def _run_stage(verdict: Verdict, package: StudentPackage, stage: Stage, spec: Pa
                                  f'`{stage.command(package)}`', env)
     if run.returncode == 2:
         return verdict.fail(f'{run.command} could not run: {run.error}').passed
-    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
+    findings = run.shown_findings(SHOWN_FINDINGS)
     return verdict.expect(
         run.returncode == 0 and not run.failed,
         f'{run.command}: {run.summary}',

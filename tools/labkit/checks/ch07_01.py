@@ -85,7 +85,7 @@ def _passes_the_system(verdict: Verdict, package: StudentPackage) -> bool:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
     if run.unjudged:
         return verdict.fail(run.unjudged).passed
-    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
+    findings = run.shown_findings(SHOWN_FINDINGS)
     return verdict.expect(
         run.returncode == 0 and not run.failed,
         f'the running check of {MEETS_R9.shown}, which meets R9, passes with your spec',

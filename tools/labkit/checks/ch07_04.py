@@ -235,7 +235,7 @@ def _spec_passes(verdict: Verdict, package: StudentPackage, day: LaunchProbe) ->
                             f'{len(EXPECTED_NODES)} nodes (N1)').passed
     if run.returncode == 2:
         return verdict.fail(f'`{run.command}` could not read the spec: {run.error}').passed
-    findings = '\n      '.join(run.failed[:SHOWN_FINDINGS])
+    findings = run.shown_findings(SHOWN_FINDINGS)
     return verdict.expect(run.returncode == 0 and not run.failed,
                           f'your spec passes your running system ({run.summary})',
                           'your running system (the day shift) fails your spec (N6): fix the '

@@ -77,6 +77,16 @@ class SpecRun:
                 'machine is less busy. It reported:\n      '
                 + '\n      '.join([*seen, *below[-SHOWN_LINES:]]))
 
+    def shown_findings(self, count: int = SHOWN_LINES) -> str:
+        """The first `count` findings, one per line, for a verdict; a run that failed
+        without a finding (a crash, a signal) shows its exit code and last lines instead,
+        so a verdict never quotes an empty report."""
+        if self.failed:
+            return '\n      '.join(self.failed[:count])
+        last = (self.stdout + self.stderr).strip().splitlines()[-count:]
+        return '\n      '.join([f'(exit code {self.returncode}, no finding; its last lines:)',
+                                 *last])
+
     @property
     def error(self) -> str:
         """speccheck's own error message (bad spec or launch file), exit code 2."""
