@@ -1,10 +1,16 @@
 """`ros2 multicast send|receive` in Jazzy's words (outputs recorded from the Jazzy reference).
 
 One datagram goes to group 225.0.0.1 with TTL 1, so it stays on this host's link.
+`ros2 doctor hello` sends to the same group and port, so its tests never run
+beside these (one xdist group): a hello datagram would be received here.
 """
 from __future__ import annotations
 
 import re
+
+import pytest
+
+pytestmark = pytest.mark.xdist_group('doctor_hello_multicast')
 
 SEND_HELP = """\
 usage: ros2 multicast send [-h] [--group GROUP] [--port PORT] [--ttl TTL]
