@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import os
+import re
 import shutil
 import sys
 
@@ -189,5 +190,18 @@ def test_launch_log_dir_is_below_ros_log_dir(context):
 
 def test_ensure_argument_type():
     ensure_argument_type('x', [str], 'name')
-    with pytest.raises(TypeError, match="Expected 'name' to be one of"):
+    # Jazzy's words (observed): the caller quoted in front, the classes as Python prints them.
+    with pytest.raises(TypeError, match=re.escape(
+            "'MyAction' expected 'name' to be one of [<class 'str'>, <class 'bytes'>], "
+            "but got '1' of type '<class 'int'>'")):
         ensure_argument_type(1, (str, bytes), 'name', 'MyAction')
+    with pytest.raises(TypeError, match=re.escape(
+            "Expected 'name' to be one of [<class 'tuple'>], but got 'x' of type '<class 'str'>'")):
+        ensure_argument_type('x', tuple, 'name')
+
+
+def test_normalize_to_list_of_substitutions_iterates_what_is_not_text():
+    with pytest.raises(TypeError, match="^'int' object is not iterable$"):
+        normalize_to_list_of_substitutions(1)
+    with pytest.raises(TypeError, match="^'NoneType' object is not iterable$"):
+        normalize_to_list_of_substitutions(None)

@@ -19,7 +19,7 @@ def ensure_argument_type(argument: Any, types: type | Iterable[type],
             raise TypeError(f"'types' must contain classes, got '{entry!r}'")
     if isinstance(argument, tuple(type_list)):
         return
-    names = ', '.join(f"'{t.__name__}'" for t in type_list)
-    where = f'{caller}: ' if caller else ''
-    raise TypeError(f"{where}Expected '{argument_name}' to be one of [{names}], "
+    # Jazzy's words: the classes as Python prints them, the caller quoted in front.
+    where = f"'{caller}' expected" if caller else 'Expected'
+    raise TypeError(f"{where} '{argument_name}' to be one of {type_list}, "
                     f"but got '{argument}' of type '{type(argument)}'")

@@ -24,9 +24,5 @@ def normalize_to_list_of_substitutions(subs: Any) -> list[Substitution]:
 
     if isinstance(subs, (str, Substitution, os.PathLike)):
         return [one(subs)]
-    try:
-        items = list(subs)
-    except TypeError:
-        raise TypeError(f"Failed to normalize given item of type '{type(subs)}', "
-                        f"when only 'str' or 'launch.Substitution' were expected.") from None
-    return [one(item) for item in items]
+    # Anything else is iterated, as in Jazzy: 1 fails with "'int' object is not iterable".
+    return [one(item) for item in subs]
