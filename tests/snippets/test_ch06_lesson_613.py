@@ -141,6 +141,23 @@ def test_set_parameter_comes_before_the_layers_on_the_node_command_line(ros_env)
     assert controller.rstrip().endswith('/share/rover_config/config/sites/lab.yaml'), controller
 
 
+def test_set_parameters_from_file_is_a_layer_below_the_nodes_own(ros_env):
+    """SetParametersFromFile's file comes first on the node's command line, so scout's
+    own speeds (robots/scout.yaml) beat the lab's limits, as the lesson shows."""
+    with labkit.launch(PACKAGE, 'rover_site_for_the_group.launch.py', env=ros_env,
+                       cwd=paths.WORKSPACE) as run:
+        run.wait_for_nodes(['/scout/robot_controller'], timeout=HANG_GUARD)
+        values = labkit.read_parameters('/scout/robot_controller')
+        listing = subprocess.run(['ps', '-ww', '-o', 'args', '--ppid', str(run.pid)],
+                                 capture_output=True, text=True, check=True).stdout
+    assert (values['max_linear_speed'], values['max_angular_speed']) == (1.2, 2.0), values
+    words = next(line for line in listing.splitlines() if 'robot_controller' in line).split()
+    files = [words[i + 1] for i, word in enumerate(words) if word == '--params-file']
+    assert len(files) == 3 and files[0].endswith('/share/rover_config/config/sites/lab.yaml'), \
+        files
+    assert files[2].endswith('/share/rover_config/config/robots/scout.yaml'), files
+
+
 def _ros2(env: dict[str, str], cwd: Path, *words: str) -> subprocess.CompletedProcess[str]:
     return subprocess.run(['ros2', *words], env=env, cwd=cwd, capture_output=True, text=True,
                           timeout=120, check=False)
@@ -184,7 +201,8 @@ def _rover_config_files_shown(lesson: Path) -> set[str]:
 
 
 #: Every configuration a case above loads, and the launch file they all run.
-TESTED = {'launch/rover.launch.py', 'config/defaults.yaml', 'config/robots/scout.yaml',
+TESTED = {'launch/rover.launch.py', 'launch/rover_site_for_the_group.launch.py',
+          'config/defaults.yaml', 'config/robots/scout.yaml',
           'config/robots/ranger.yaml', 'config/robots/explorer.yaml', 'config/sites/lab.yaml',
           'config/sites/field.yaml', 'config/sites/lab_everywhere.yaml',
           'incoming/sites/warehouse.yaml', 'setup.py', 'package.xml'}
