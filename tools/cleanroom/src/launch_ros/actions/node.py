@@ -29,7 +29,7 @@ from ..utilities.command_line import (
 from ..utilities.evaluate_parameters import evaluate_parameters
 from ..utilities.namespace_utils import full_node_namespace, fully_qualified_name
 from ..utilities.normalize_parameters import normalize_parameters
-from ..utilities.normalize_remap_rule import evaluate_remap_rules, normalize_remap_rules
+from ..utilities.normalize_remap_rule import normalize_remap_rules
 from ..utilities.param_files import write_parameters_file
 from ..utilities.ros_state import global_params, global_remaps, pushed_namespace
 from ..utilities.substitution_values import perform_text
@@ -70,7 +70,8 @@ class Node(ExecuteProcess):
         self.__node_namespace = (None if namespace is None
                                  else normalize_to_list_of_substitutions(namespace))
         self.__parameters = [] if parameters is None else normalize_parameters(parameters)
-        self.__remappings = [] if remappings is None else normalize_remap_rules(remappings)
+        # A generator in Jazzy; the Node checks every rule right away.
+        self.__remappings = [] if remappings is None else list(normalize_remap_rules(remappings))
         self.__ros_arguments = ros_arguments
         self.__expanded_node_name = self.UNSPECIFIED_NODE_NAME
         self.__expanded_node_namespace = self.UNSPECIFIED_NODE_NAMESPACE
@@ -169,7 +170,8 @@ class Node(ExecuteProcess):
                                 f"for '{self.__given_identity}':")
             raise
         parameters = self._parameter_arguments(context, name, namespace)
-        own_remaps = evaluate_remap_rules(context, self.__remappings)
+        own_remaps = [(perform_text(context, src), perform_text(context, dst))
+                      for src, dst in self.__remappings]
         self.__expanded_remappings = global_remaps(context) + own_remaps
         if self.__final_node_name:
             add_node_name(context, self.__final_node_name)

@@ -1,30 +1,28 @@
-"""Remapping rules: `(from, to)` pairs of strings or substitutions."""
+"""Remapping rules: `(from, to)` pairs of strings or substitutions.
+
+As in Jazzy, a rule must be a tuple of two, each side becoming a tuple of
+substitutions; `normalize_remap_rules` is a generator (nothing is checked
+before it is iterated).
+"""
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator
 from typing import Any
 
-from launch import LaunchContext
-from launch.utilities import normalize_to_list_of_substitutions
+from launch import Substitution
+from launch.utilities import ensure_argument_type, normalize_to_list_of_substitutions
 
-from .substitution_values import perform_text
-
-NormalizedRemapRule = tuple[list[Any], list[Any]]
+NormalizedRemapRule = tuple[tuple[Substitution, ...], tuple[Substitution, ...]]
 
 
-def normalize_remap_rule(rule: Any) -> NormalizedRemapRule:
-    if not isinstance(rule, (tuple, list)) or len(rule) != 2:
-        raise TypeError(f'a remapping rule must be a (from, to) pair, got {rule!r}')
-    return (normalize_to_list_of_substitutions(rule[0]),
-            normalize_to_list_of_substitutions(rule[1]))
+def normalize_remap_rule(remap_rule: Any) -> NormalizedRemapRule:
+    ensure_argument_type(remap_rule, (tuple,), 'remap_rule')
+    if len(remap_rule) != 2:
+        raise TypeError(f'remap_rule must be a tuple of length 2, got length {len(remap_rule)}')
+    return (tuple(normalize_to_list_of_substitutions(remap_rule[0])),
+            tuple(normalize_to_list_of_substitutions(remap_rule[1])))
 
 
-def normalize_remap_rules(rules: Iterable[Any]) -> list[NormalizedRemapRule]:
-    if isinstance(rules, (str, dict)):
-        raise TypeError(f"'remappings' must be a list of (from, to) pairs, got {rules!r}")
-    return [normalize_remap_rule(rule) for rule in rules]
-
-
-def evaluate_remap_rules(context: LaunchContext,
-                         rules: Iterable[NormalizedRemapRule]) -> list[tuple[str, str]]:
-    return [(perform_text(context, src), perform_text(context, dst)) for src, dst in rules]
+def normalize_remap_rules(remap_rules: Iterable[Any]) -> Iterator[NormalizedRemapRule]:
+    for remap_rule in remap_rules:
+        yield normalize_remap_rule(remap_rule)
