@@ -7,12 +7,13 @@ include) are seen.
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
 
 from launch import LaunchContext, Substitution
 from launch.substitutions import TextSubstitution
-from launch.utilities import normalize_to_list_of_substitutions
+from launch.utilities import ensure_argument_type, normalize_to_list_of_substitutions
 
 from ._support.file_substitutions import expand_file_substitutions
 from ._support.launch_cleanup import ensure_cleanup_registered
@@ -45,7 +46,8 @@ class ParameterValue:
 
     @property
     def value(self) -> Any:
-        return self.__value
+        # One substitution shows as a list of one, as in Jazzy (evaluated alike).
+        return [self.__value] if isinstance(self.__value, Substitution) else self.__value
 
     @property
     def value_type(self) -> Any:
@@ -97,13 +99,14 @@ class Parameter:
     """One named parameter; given to a node it becomes `-p name:=value`."""
 
     def __init__(self, name: Any, value: Any, *, value_type: Any = None) -> None:
-        self.__name = name
+        ensure_argument_type(name, (str, Substitution, Iterable), 'name')
+        # The name is kept as a list of substitutions (Jazzy's `Parameter.name`).
+        self.__name = normalize_to_list_of_substitutions(name)
         # A ParameterValue is no value of a Parameter: Jazzy refuses it (TypeError).
         self.__value = ParameterValue(value, value_type=value_type)
 
     def __str__(self) -> str:
-        return (f'launch_ros.description.Parameter('
-                f'name={normalize_to_list_of_substitutions(self.__name)}, '
+        return (f'launch_ros.description.Parameter(name={self.__name}, '
                 f'value={self.value}, value_type={self.value_type})')
 
     @property
@@ -119,8 +122,7 @@ class Parameter:
         return self.__value.value_type
 
     def evaluate(self, context: LaunchContext) -> tuple[str, Any]:
-        name = self.__name if isinstance(self.__name, str) else perform_text(context, self.__name)
-        return name, self.__value.evaluate(context)
+        return perform_text(context, self.__name), self.__value.evaluate(context)
 
 
 class ParameterFile:
@@ -133,6 +135,8 @@ class ParameterFile:
 
     def __init__(self, param_file: str | Path | Any, *,
                  allow_substs: bool | Any = False) -> None:
+        ensure_argument_type(param_file, (str, Substitution, Iterable, os.PathLike, bytes),
+                             'param_file', 'ParameterFile()')
         self.__param_file = (param_file if isinstance(param_file, Path)
                              else normalize_to_list_of_substitutions(param_file))
         self.__allow_substs = (allow_substs if isinstance(allow_substs, bool)

@@ -2,9 +2,15 @@
 
 The result is a tuple of `pathlib.Path` (parameter files), the `Parameter`s
 themselves and flat `{name: value}` dicts, in the order the launch file gave
-them, as Jazzy returns it: a list given as a plain Python value comes back as
-a tuple (one typed from a substitution, e.g. `ParameterValue(..., value_type=
-List[int])`, as the list YAML makes of it), and an empty one is refused.
+them, as Jazzy returns it.  Values of a normalized dict (see
+normalize_parameters) evaluate as Jazzy's do:
+
+- a ParameterValue evaluates itself (a list stays a list);
+- substitution text is read as YAML ('' stays ''); a YAML list must hold items
+  of one type (that of the first), and becomes a tuple;
+- a tuple of lists of substitutions is one YAML value per item, of one type;
+- a tuple of Python values stays as it is; a scalar must be a float, int,
+  str, bool or bytes.
 """
 from __future__ import annotations
 
@@ -12,41 +18,78 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from launch import LaunchContext
+import yaml
+from launch import LaunchContext, Substitution
+from launch.utilities import ensure_argument_type, perform_substitutions
 
 # Module import: parameter_descriptions imports this package (circular otherwise).
 from .. import parameter_descriptions as descriptions
 from .normalize_parameters import NormalizedParameter, NormalizedParameterDict
-from .substitution_values import perform_text
 
 EvaluatedParameter = Path | descriptions.Parameter | dict[str, Any]
-#: Jazzy's words for an empty list (it cannot tell the type of its items).
-_SCALAR_TYPES = ("[<class 'float'>, <class 'int'>, <class 'str'>, <class 'bool'>, "
-                 "<class 'bytes'>]")
+
+_STR_HINT = ('If the parameter is meant to be a string, try wrapping it in '
+             'launch_ros.parameter_descriptions.ParameterValue(value, value_type=str)')
+_ITEM_TYPES = (bool, int, float, str)
 
 
-def _key_part(context: LaunchContext, part: Any) -> str:
-    return part if isinstance(part, str) else perform_text(context, part)
+def _not_uniform(name: str) -> TypeError:
+    return TypeError('Expected a non-empty sequence, with items of uniform type. Allowed '
+                     'sequence item types are bool, int, float, str. Got inconsistent input '
+                     f'for "{name}"')
+
+
+def _uniform_items(name: str, items: Sequence[Any]) -> tuple[Any, ...]:
+    """Items of one type, that of the first (so a bool may follow an int, a bool being
+    an int in Python, but not the other way round), else Jazzy's TypeError."""
+    if not items or not isinstance(items[0], _ITEM_TYPES):
+        raise _not_uniform(name)
+    first = type(items[0])
+    if not all(isinstance(item, first) for item in items):
+        raise _not_uniform(name)
+    return tuple(items)
+
+
+def _evaluate_text(context: LaunchContext, name: str, value: Sequence[Substitution]) -> Any:
+    text = perform_substitutions(context, list(value))
+    if text == '':
+        return ''
+    try:
+        loaded = yaml.safe_load(text)
+    except yaml.YAMLError:
+        raise TypeError(f'Unable to parse the value of parameter {name} as yaml. '
+                        f'{_STR_HINT}') from None
+    if isinstance(loaded, list):
+        return _uniform_items(name, loaded)
+    if not isinstance(loaded, (bytes, *_ITEM_TYPES)):
+        raise TypeError('Allowed value types are bytes, bool, int, float, str, Sequence[bool], '
+                        'Sequence[int], Sequence[float], Sequence[str]. Got '
+                        f'{type(loaded)} for "{name}". {_STR_HINT}')
+    return loaded
+
+
+def _evaluate_value(context: LaunchContext, name: str, value: Any) -> Any:
+    if isinstance(value, descriptions.ParameterValue):
+        return value.evaluate(context)
+    if isinstance(value, tuple) and value:
+        if isinstance(value[0], Substitution):
+            return _evaluate_text(context, name, value)
+        if isinstance(value[0], list):
+            return _uniform_items(name, [
+                yaml.safe_load(perform_substitutions(context, item)) for item in value])
+        return value
+    ensure_argument_type(value, (float, int, str, bool, bytes), 'value')
+    return value
 
 
 def evaluate_parameter_dict(context: LaunchContext,
                             parameters: NormalizedParameterDict) -> dict[str, Any]:
-    """Substitute names and values; nested names are joined with '.'."""
+    """Substitute names and values (see the module docstring)."""
     evaluated: dict[str, Any] = {}
     for name_parts, value in parameters.items():
-        name = '.'.join(_key_part(context, part) for part in name_parts)
-        evaluated[name] = _evaluate_value(context, value)
+        name = perform_substitutions(context, list(name_parts))
+        evaluated[name] = _evaluate_value(context, name, value)
     return evaluated
-
-
-def _evaluate_value(context: LaunchContext, value: descriptions.ParameterValue) -> Any:
-    if isinstance(value.value, (list, tuple)) and not value.value:
-        raise TypeError(f"Expected 'value' to be one of {_SCALAR_TYPES}, but got '()' of "
-                        "type '<class 'tuple'>'")
-    result = value.evaluate(context)
-    # A plain list of values stays a sequence (a list of substitutions is one text).
-    plain_list = isinstance(value.value, (list, tuple)) and isinstance(result, list)
-    return tuple(result) if plain_list else result
 
 
 def evaluate_parameters(context: LaunchContext, parameters: Sequence[NormalizedParameter]

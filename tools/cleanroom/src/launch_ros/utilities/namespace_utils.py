@@ -6,34 +6,35 @@ tested on their own.
 from __future__ import annotations
 
 
-def is_namespace_absolute(namespace: str) -> bool:
+def is_namespace_absolute(ns: str) -> bool:
     """A namespace starting with '/' ignores every pushed namespace."""
-    return namespace.startswith('/')
+    return ns.startswith('/')
 
 
-def is_root_namespace(namespace: str) -> bool:
-    return namespace == '/'
+def is_root_namespace(ns: str) -> bool:
+    return ns == '/'
 
 
-def make_namespace_absolute(namespace: str) -> str:
-    """Give a relative namespace a leading '/' (ROS resolves them from the root)."""
-    if is_namespace_absolute(namespace):
-        return namespace
-    return '/' + namespace
+def make_namespace_absolute(ns: str | None) -> str | None:
+    """Give a relative namespace a leading '/' (ROS resolves them from the root); None stays
+    None, as in Jazzy."""
+    if ns is None or is_namespace_absolute(ns):
+        return ns
+    return '/' + ns
 
 
-def prefix_namespace(base_ns: str | None, namespace: str | None) -> str | None:
+def prefix_namespace(base_ns: str | None, ns: str | None) -> str | None:
     """Compose a pushed namespace with a node's (or another push's) namespace.
 
-    An absolute `namespace` replaces the base, a relative one is appended to
+    An absolute `ns` replaces the base, a relative one is appended to
     it, and a missing one leaves the base as it was.  Empty strings count as
     missing, the way `Node(namespace='')` means "no namespace".
     """
-    if not namespace:
+    if not ns:
         return base_ns or None
-    if is_namespace_absolute(namespace) or not base_ns:
-        return namespace
-    return base_ns.rstrip('/') + '/' + namespace
+    if is_namespace_absolute(ns) or not base_ns:
+        return ns
+    return base_ns.rstrip('/') + '/' + ns
 
 
 def full_node_namespace(pushed: str | None, namespace: str | None) -> str | None:
