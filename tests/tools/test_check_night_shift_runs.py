@@ -58,32 +58,3 @@ def test_no_spec_run_for_the_night_shift_or_a_system_not_all_up(package, targets
     assert _inspect(package, 'night', ch07_04.EXPECTED_NODES).spec is None
     assert _inspect(package, 'day', ch07_04.EXPECTED_NODES[:-1]).spec is None
     assert targets == []
-
-
-def _spawned(*lines: str) -> list[str]:
-    verdict = Verdict('7.4')
-    run = LaunchProbe('ros2 launch my_ws_exercises night_shift.launch.py', list(lines), None,
-                      False, None)
-    for robot in ch07_04.ROBOTS:
-        ch07_04._spawned_where_its_layer_says(verdict, run, robot)
-    return [f'{"✓" if met else "✗"} {sentence}' for met, sentence in verdict.results]
-
-
-def test_the_spawn_poses_show_the_capstone_layers_under_the_others():
-    """N2: the inspector's layer goes over config/turtle3.yaml, not instead of it; the
-    spawner's report is the one value of turtle3.yaml the inspector's layer leaves."""
-    log = '[INFO] [spawner-{n}] [INFO] [1.5] [{robot}.spawner]: Spawned {robot} at {pose}'
-    right = [log.format(n=9, robot='turtle2', pose='(2.00, 9.00), heading 0.00'),
-             log.format(n=16, robot='turtle3', pose='(9.00, 2.00), heading 1.57')]
-    assert _spawned(*right) == [
-        "✓ turtle2 spawned at (2.00, 9.00), heading 0.00: the capstone's config/turtle2.yaml "
-        'is loaded (N3)',
-        "✓ turtle3 spawned at (9.00, 2.00), heading 1.57: the capstone's config/turtle3.yaml "
-        "is loaded under the inspector's layer (N2)"]  # turtle1 is turtlesim's: no spawner
-    default = log.format(n=16, robot='turtle3', pose='(1.00, 1.00), heading 0.00')
-    assert _spawned(right[0], default)[1] == (
-        '✗ turtle3 spawned at (1.00, 1.00), heading 0.00, not at (9.00, 2.00), heading 1.57 '
-        "from the capstone's config/turtle3.yaml: load it first, then the other layers over "
-        'it (N2)')
-    assert _spawned(right[0])[1] == \
-        '✗ turtle3 was never spawned (no "Spawned turtle3 at" line in the log)'

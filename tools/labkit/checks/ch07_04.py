@@ -146,42 +146,6 @@ def _robot_values(verdict: Verdict, run: LaunchProbe, robot: str, shift: str) ->
                    f'{robot} with {shown_shift(shift)}: ' + '; '.join(wrong))
 
 
-def spawn_pose(robot: str) -> tuple[float, float, float] | None:
-    """Where the capstone's config/<robot>.yaml spawns `robot`, or None (turtle1 is
-    turtlesim's own turtle: no spawner)."""
-    pose = tuple(capstone_value(robot, 'spawner', name) for name in ('x', 'y', 'theta'))
-    return None if None in pose else pose  # type: ignore[return-value]
-
-
-def spawned_pattern(robot: str) -> str:
-    """The spawner's report of `robot` in the launch log, its pose in groups x, y, theta."""
-    return (rf'\[{robot}\.spawner\]: Spawned {robot} at \((?P<x>-?[\d.]+), '
-            r'(?P<y>-?[\d.]+)\), heading (?P<theta>-?[\d.]+)$')
-
-
-def _spawned_where_its_layer_says(verdict: Verdict, run: LaunchProbe, robot: str) -> None:
-    """N2 and N3: the capstone's config/<robot>.yaml is still loaded under the other
-    layers, which the spawn pose shows (the inspector's layer does not set it)."""
-    want = spawn_pose(robot)
-    if want is None:
-        return
-    found = next((match for line in run.lines
-                  if (match := re.search(spawned_pattern(robot), line))), None)
-    got = tuple(float(found[name]) for name in ('x', 'y', 'theta')) if found else None
-    shown = f'({want[0]:.2f}, {want[1]:.2f}), heading {want[2]:.2f}'
-    layer = f"the capstone's config/{robot}.yaml"
-    requirement = 'N2' if robot == INSPECTOR else 'N3'
-    under = " under the inspector's layer" if robot == INSPECTOR else ''
-    at_pose = got is not None and all(math.isclose(g, w, abs_tol=0.005)
-                                      for g, w in zip(got, want, strict=True))
-    verdict.expect(
-        at_pose,
-        f'{robot} spawned at {shown}: {layer} is loaded{under} ({requirement})',
-        f'{robot} spawned at ({got[0]:.2f}, {got[1]:.2f}), heading {got[2]:.2f}, not at '
-        f'{shown} from {layer}: load it first, then the other layers over it ({requirement})'
-        if got else f'{robot} was never spawned (no "Spawned {robot} at" line in the log)')
-
-
 def _robots_running(verdict: Verdict, run: LaunchProbe) -> bool:
     ok = requirements.node_running(verdict, run, '/turtlesim',
                                    "include capstone_bringup's sim.launch.py (N1)")
@@ -213,8 +177,7 @@ def _inspect(package: StudentPackage, shift: str) -> Callable[[GraphSnapshot], S
 def _shift(package: StudentPackage, shift: str) -> LaunchProbe:
     arguments = {} if shift == 'day' else {'shift': shift}
     return probe(package, LAUNCH_FILE, EXPECTED_NODES, arguments=arguments,
-                 timeout=STARTUP_GUARD, inspect=_inspect(package, shift),
-                 logged=[spawned_pattern(robot) for robot in ROBOTS if spawn_pose(robot)])
+                 timeout=STARTUP_GUARD, inspect=_inspect(package, shift))
 
 
 def _bad_shift_refused(verdict: Verdict, package: StudentPackage) -> None:
@@ -303,7 +266,6 @@ def check_night_shift(package: StudentPackage, verdict: Verdict) -> Verdict:
         return verdict
     for robot in ROBOTS:
         _robot_values(verdict, day, robot, 'day')
-        _spawned_where_its_layer_says(verdict, day, robot)
     night = _shift(package, 'night')
     if requirements.launch_ran(verdict, night):
         for robot in ROBOTS:

@@ -109,7 +109,7 @@ def _launch_is_up(lines: list[str], present: set[str]) -> bool:
 def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[str] = (),
           arguments: Mapping[str, Any] | None = None, timeout: float = 30.0,
           inspect: Callable[[GraphSnapshot], Any] | None = None,
-          until_first_process: bool = False, logged: Iterable[str] = ()) -> LaunchProbe:
+          until_first_process: bool = False) -> LaunchProbe:
     """Start `ros2 launch <package> <launch_file> [arguments]`, wait until it is up
     (see the module docstring), look at the graph, stop it with Ctrl-C.
 
@@ -118,12 +118,9 @@ def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[st
     With `until_first_process`, the launch is stopped as soon as it announces a
     process, with no graph read: for a launch that must refuse its arguments, one
     process started already proves it did not, and waiting for a whole system
-    to come up would only cost time.  `logged` (regular expressions) are lines the
-    launch must also have logged to be up, for what a check reads from the log
-    (a short-lived process's report, which may come after the nodes are up).
+    to come up would only cost time.
     """
     expected = set(expected_nodes)
-    awaited = [re.compile(pattern) for pattern in logged]
     running = launch(package.name, launch_file, launch_arguments=arguments or {},
                      env=package.environment(), cwd=package.workspace)
     try:
@@ -141,8 +138,7 @@ def probe(package: StudentPackage, launch_file: str, expected_nodes: Iterable[st
             complete = bool(expected) and expected <= present  # up: no settle needed
             settle = PROCESSES_SETTLED_WITH_NODES_MISSING if expected else PROCESSES_SETTLED
             settled = time.monotonic() - steady_since >= settle
-            if _launch_is_up(lines, present) and (settled or complete) \
-                    and all(any(map(pattern.search, lines)) for pattern in awaited):
+            if _launch_is_up(lines, present) and (settled or complete):
                 break
             time.sleep(0.1)
         exited = running.poll() is not None
