@@ -103,6 +103,16 @@ def test_set_environment_variable_reaches_later_processes_and_ends_with_its_grou
                      '[after_group-3] ROBOT_NAME=beta'], run.output()
 
 
+def test_execution_complete_fires_only_for_a_handler_registered_before_its_action(ros_env):
+    run = _start('events_execution_complete.launch.py', ros_env)
+    code = _wait_for_exit(run)
+    assert code == 0, run.output()
+    _in_order(run.lines, r'^\[INFO\] \[calibrate-1\]: process has finished cleanly',
+              r'^\[INFO\] \[launch\.user\]: calibrate complete$')
+    assert _count(run.lines, r'\[launch\.user\]: timer: one second$') == 1, run.output()
+    assert _count(run.lines, r'announce complete') == 0, run.output()
+
+
 def test_without_a_shell_the_shell_syntax_is_printed_as_it_is(ros_env):
     run = _start('process_no_shell.launch.py', ros_env)
     code = _wait_for_exit(run)
@@ -231,6 +241,7 @@ def _graded_by_exercise_checks() -> set[tuple[str, str]]:
 TESTED = {(PACKAGE, name) for name in (
     'process_commands.launch.py', 'process_environment.launch.py', 'process_no_shell.launch.py',
     'process_missing_executable.launch.py', 'events_timer.launch.py',
+    'events_execution_complete.launch.py',
     'events_on_start.launch.py', 'events_critical.launch.py', 'events_respawn.launch.py',
     'process_stubborn.launch.py')}
 
