@@ -9,6 +9,7 @@ session and is stopped (SIGINT, then SIGKILL) when the module ends.
 from __future__ import annotations
 
 import os
+import signal
 import subprocess
 import sys
 from collections.abc import Callable, Iterator
@@ -22,6 +23,10 @@ from launch_testing.domain_isolation import lease_domain
 
 ROS2 = str(Path(sys.executable).parent / 'ros2')
 SAMPLE_NODES = str(Path(__file__).with_name('sample_nodes.py'))
+
+
+def _sigint_as_in_a_terminal() -> None:
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
 
 
 @pytest.fixture(scope='module')
@@ -116,8 +121,12 @@ def ros2_background(cli_env: dict[str, str]) -> Iterator[Callable[..., subproces
     started: list[subprocess.Popen] = []
 
     def start(*args: str) -> subprocess.Popen:
+        # Ctrl+C as in a terminal: a test run started in the background (nohup ... &,
+        # a CI script) hands its children SIGINT ignored, and Python then never raises
+        # KeyboardInterrupt in them
         proc = subprocess.Popen([ROS2, *args], env=cli_env, stdout=subprocess.PIPE,
-                                stderr=subprocess.PIPE, text=True, start_new_session=True)
+                                stderr=subprocess.PIPE, text=True, start_new_session=True,
+                                preexec_fn=_sigint_as_in_a_terminal)
         started.append(proc)
         return proc
 
