@@ -184,3 +184,20 @@ def test_a_fixed_domain_is_held_by_one_run_at_a_time():
                 pass
     with isolation.holding_fixed_domains([101], timeout=0):
         pass  # given back when the first run ends
+
+
+@pytest.mark.ros  # it starts a ROS 2 daemon
+def test_a_fixed_domain_given_back_has_no_daemon_left(tmp_path):
+    """The other stack may hold the domain next: a daemon of this one would answer its
+    `ros2` on the same port (Jazzy's client got ConnectionResetError from ours)."""
+    domain = '211'  # a fixed domain no lesson uses
+    env = {**os.environ, 'ROS_DOMAIN_ID': domain, 'ROS_LOG_DIR': str(tmp_path)}
+    ros2 = isolation.paths.executable('ros2')
+
+    def status() -> str:
+        return subprocess.run([ros2, 'daemon', 'status'], env=env, capture_output=True,
+                              text=True, check=False).stdout.strip()
+    with isolation.holding_fixed_domains([int(domain)]):
+        subprocess.run([ros2, 'daemon', 'start'], env=env, capture_output=True, check=True)
+        assert status() == 'The daemon is running'
+    assert status() == 'The daemon is not running'

@@ -12,10 +12,13 @@ from __future__ import annotations
 
 import contextlib
 import os
+import subprocess
 import sys
 import uuid
 from collections.abc import Iterable, Iterator
 from pathlib import Path
+
+from . import paths
 
 try:
     from rclhelpers import domains
@@ -88,4 +91,21 @@ def holding_fixed_domains(ids: Iterable[int], timeout: float = 1200.0) -> Iterat
     with contextlib.ExitStack() as held:
         for domain_id in sorted(set(ids)):
             held.enter_context(domains.lease_domain(timeout, range(domain_id, domain_id + 1)))
+            held.callback(stop_daemon, domain_id)  # runs first: before the lease goes
         yield
+
+
+def stop_daemon(domain_id: int) -> None:
+    """Stop this stack's `ros2` daemon of ``domain_id``, if one runs.
+
+    A daemon outlives the run that started it (Jazzy's `ros2` leaves it on
+    purpose).  In a fixed domain the next holder may be the other stack (the
+    parity command runs 6.7 on both), whose `ros2` would then talk to a daemon
+    it cannot understand on the same port (11511 + ID): Jazzy's client got
+    `ConnectionResetError`, and `ros2 node list` printed nothing."""
+    try:
+        ros2 = paths.executable('ros2')
+    except FileNotFoundError:
+        return
+    subprocess.run([ros2, 'daemon', 'stop'], env={**os.environ, 'ROS_DOMAIN_ID': str(domain_id)},
+                   capture_output=True, timeout=60, check=False)
