@@ -38,6 +38,8 @@ NormalizedParameter = Any | NormalizedParameterDict
 
 #: What a list item may be, in the order Jazzy names them in its error.
 _ITEM_TYPES = (float, int, str, bool, str, Substitution, Iterable)
+#: An item's kind, the first that matches (bool before int: a bool is an int too).
+_ITEM_KINDS = (Substitution, str, bool, int, float, Sequence)
 
 
 def _yaml_text(value: Any) -> list[Substitution]:
@@ -59,20 +61,10 @@ def _normalize_parameter_array_value(value: Any) -> Any:
     kinds: set[type] = set()
     for item in value:
         ensure_argument_type(item, _ITEM_TYPES, 'subvalue')
-        if isinstance(item, Substitution):
-            kinds.add(Substitution)
-        elif isinstance(item, str):
-            kinds.add(str)
-        elif isinstance(item, bool):
-            kinds.add(bool)
-        elif isinstance(item, int):
-            kinds.add(int)
-        elif isinstance(item, float):
-            kinds.add(float)
-        elif isinstance(item, Sequence):
-            kinds.add(list)
-        else:
+        kind = next((kind for kind in _ITEM_KINDS if isinstance(item, kind)), None)
+        if kind is None:
             raise RuntimeError(f'Failed to handle type {item!r}')
+        kinds.add(list if kind is Sequence else kind)
     if kinds == {int}:
         return tuple(value)
     if kinds in ({float}, {int, float}):
